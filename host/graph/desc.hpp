@@ -1,0 +1,263 @@
+// The pass graph as plain data: what preset.toml says, with the file:line:col of every value so
+// that validation, compilation and execution errors can point back at the user's text.
+// Parsing (parse.hpp) fills these structs; validation (validate.hpp) checks names, formats, sizes
+// and hazards; the planner (exec/plan.hpp) and executor run them. No Vulkan types here.
+#pragma once
+
+#include "util/error.hpp"
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace pl::graph {
+
+// A size expression: a literal vector ([w,h] or [w,h,d] or a single integer) or a text expression
+// over `view`, `view.w`, `view.h`, integer params (`params.name`), + - * / % and parentheses.
+// "view" is the 2-vector (w,h); scalars broadcast. Examples: "view", "view/2", "view.w*view.h*4".
+struct SizeExpr {
+    std::string text;              // empty when literal is used
+    std::vector<int64_t> literal;  // 1..3 components
+    SourceLoc loc;
+    bool empty() const { return text.empty() && literal.empty(); }
+};
+
+enum class ImageKind { tex2d, tex2d_array, tex3d, cube };
+
+struct SamplerDesc {
+    std::string filter = "linear";      // linear | nearest (mag and min)
+    std::string mip_filter = "linear";  // linear | nearest
+    std::array<std::string, 3> address = {"repeat", "repeat", "repeat"};  // repeat|clamp|mirror|border
+    std::string border = "transparent_black";  // transparent_black | opaque_black | opaque_white
+    float anisotropy = 0.0f;  // 0 = off; else max anisotropy (clamped to the device limit)
+    std::string compare;      // "" = off; else less | less_equal | greater | ... (shadow maps)
+    float lod_bias = 0.0f;
+    float min_lod = 0.0f;
+    float max_lod = 1000.0f;
+    SourceLoc loc;
+};
+
+struct ImageDesc {
+    std::string name;
+    SourceLoc loc;
+    ImageKind kind = ImageKind::tex2d;
+    std::string format = "rgba8";  // see vk/formats.hpp for the list of names
+    SourceLoc format_loc;
+    SizeExpr size;       // default "view"; 3 components for tex3d
+    int layers = 1;      // tex2d_array layer count (cube: always 6)
+    int mips = 1;        // 0 = full chain ("full" in TOML)
+    int samples = 1;     // MSAA sample count
+    bool history = false;  // keep last frame's content, readable as <name>_prev
+    std::string alias;     // another image's name: same memory, own sampler
+    std::string file;      // image file (relative to the preset), PNG/EXR/HDR/JPG
+    bool srgb = false;     // file/generator colour is sRGB-encoded
+    std::string generator;  // checker | uv-grid | value-noise | gradient-noise | constant
+    std::map<std::string, std::vector<double>> generator_args;  // e.g. cells=[8], color_a=[...]
+    std::optional<std::array<float, 4>> clear;  // cleared at the start of every frame
+    SamplerDesc sampler;
+};
+
+struct BufferDesc {
+    std::string name;
+    SourceLoc loc;
+    SizeExpr size;  // bytes
+    int stride = 0;  // informational (element size) for dot/inspection
+    std::optional<uint32_t> clear;  // filled with this 32-bit value at the start of every frame
+    std::vector<double> data;       // initial contents ...
+    std::string data_type = "float";  // ... as float | int | uint 32-bit values
+    bool history = false;
+};
+
+struct MeshDesc {
+    std::string name;
+    SourceLoc loc;
+    std::string generator;  // plane | cube | sphere | torus | teapot | fullscreen-quad
+    std::string file;       // .obj or .gltf/.glb relative to the preset
+    std::map<std::string, double> args;  // generator arguments: segments, radius, tube ...
+    int instances = 1;
+};
+
+enum class ParamType { f32, i32, boolean, vec2, vec3, vec4, color3, color4, enumeration };
+
+struct ParamDesc {
+    std::string name;
+    SourceLoc loc;
+    ParamType type = ParamType::f32;
+    std::array<double, 4> value{};  // enum: index into options; bool: 0/1
+    std::optional<double> min, max;
+    bool log = false;  // UI slider in log scale
+    std::vector<std::string> options;  // enum values; shader sees NAME_OPTION defines
+    std::string doc;
+    int components() const;  // 1..4
+};
+
+// Blend state for one colour target. "off", or a named mode, or full factors.
+struct BlendDesc {
+    bool enable = false;
+    std::string src_color = "one", dst_color = "zero", color_op = "add";
+    std::string src_alpha = "one", dst_alpha = "zero", alpha_op = "add";
+    std::string write_mask = "rgba";
+    SourceLoc loc;
+};
+
+struct AttachmentRef {
+    std::string image;
+    int mip = 0;
+    // Layer to render into: >= 0 a fixed layer/face, -1 all layers (layered rendering with
+    // gl_Layer), -2 "iteration": the layer equals the repeat index (render each cube face).
+    int layer = 0;
+    std::string resolve;  // MSAA: single-sample image to resolve into
+    SourceLoc loc;
+};
+
+struct StencilFaceDesc {
+    std::string fail = "keep", pass = "keep", depth_fail = "keep";
+    std::string compare = "always";
+};
+
+struct DepthDesc {
+    AttachmentRef target;
+    std::string test = "less";  // never|less|equal|less_equal|greater|not_equal|greater_equal|always|off
+    bool write = true;
+    float bias_constant = 0.0f, bias_slope = 0.0f;  // polygon offset (shadow acne)
+    bool clamp = false;
+    SourceLoc loc;
+};
+
+struct StencilDesc {
+    bool enable = false;
+    StencilFaceDesc front, back;
+    uint32_t reference = 0, read_mask = 0xff, write_mask = 0xff;
+    SourceLoc loc;
+};
+
+// Per-pass clears; an absent value means "load previous contents".
+struct ClearDesc {
+    std::optional<std::array<float, 4>> color;
+    std::optional<float> depth;
+    std::optional<uint32_t> stencil;
+};
+
+enum class PassKind { fullscreen, draw, compute, blit, mips, clear, copy };
+
+struct ShaderRef {
+    std::string file;  // as written, relative to the preset folder (or passes/)
+    SourceLoc loc;
+    bool empty() const { return file.empty(); }
+};
+
+struct PassDesc {
+    std::string name;
+    SourceLoc loc;
+    PassKind kind = PassKind::fullscreen;
+
+    // Shaders. fullscreen: fragment (vertex optional, host provides one); draw: vertex+fragment
+    // (+ geometry, tess_control, tess_eval); compute: compute.
+    ShaderRef vertex, fragment, geometry, tess_control, tess_eval, compute;
+    std::map<std::string, std::string> defines;  // injected as #define NAME VALUE
+
+    // Raster state.
+    std::vector<AttachmentRef> targets;  // colour targets in location order
+    std::optional<DepthDesc> depth;
+    StencilDesc stencil;
+    std::vector<BlendDesc> blend;  // one for all targets, or one per target
+    ClearDesc clear;
+    std::string mesh;              // draw: mesh name; empty = no vertex input
+    int vertex_count = 0;          // draw without mesh: vertices from gl_VertexIndex
+    std::optional<int> instances;  // overrides the mesh's instance count
+    std::string indirect;          // buffer holding VkDrawIndexedIndirectCommand / dispatch args
+    uint64_t indirect_offset = 0;
+    std::string topology = "triangles";  // triangles|triangle_strip|lines|line_strip|points|patches|triangles_adjacency
+    int patch_points = 3;
+    std::string cull = "back";     // none|back|front
+    std::string front_face = "ccw";
+    std::string polygon = "fill";  // fill|line|point
+    float line_width = 1.0f;
+
+    // Compute.
+    SizeExpr groups;   // work groups
+    SizeExpr threads;  // or threads: groups = ceil(threads / local_size)
+
+    // Repetition: run N times with the iteration index in the shader (pl_iteration).
+    SizeExpr repeat;  // empty = 1
+
+    // blit / copy / mips / clear.
+    std::string src, dst;              // blit, copy
+    std::string image;                 // mips, clear
+    std::string filter = "linear";     // blit filter
+
+    bool enabled = true;
+};
+
+struct OrbitCamera {
+    std::array<float, 3> target{0, 0, 0};
+    float distance = 3.0f;
+    float yaw = 30.0f, pitch = 20.0f;  // degrees
+};
+
+struct ViewDesc {
+    std::array<int, 2> size{640, 360};
+    OrbitCamera orbit;
+    float fov = 45.0f;  // vertical, degrees
+    float near = 0.05f, far = 100.0f;
+    bool ortho = false;
+    float ortho_height = 2.0f;
+    SourceLoc loc;
+};
+
+struct PresetMeta {
+    std::string title, family, summary;
+    std::vector<std::string> tags;
+};
+
+// A generic value of a test case or check argument: number, string, bool or number list.
+using Value = std::variant<double, bool, std::string, std::vector<double>>;
+
+struct CheckDesc {
+    std::string kind;  // "probe", "no_nan", "range", "mean", ... (see docs/format.md)
+    std::map<std::string, Value> args;
+    SourceLoc loc;
+};
+
+struct TestDesc {
+    std::string name;
+    SourceLoc loc;
+    std::optional<std::array<int, 2>> size;
+    double time = 0.0;
+    int frames = 1;
+    double step = 1.0 / 60.0;
+    std::map<std::string, Value> set;  // param overrides
+    std::string pass;                  // image to check; empty = output
+    std::string golden;                // path relative to preset
+    std::map<std::string, double> tolerance;
+    std::vector<CheckDesc> checks;     // probes and properties
+    std::vector<std::string> requires_features;
+};
+
+struct GraphDesc {
+    std::filesystem::path file;  // preset.toml (absolute)
+    std::filesystem::path dir;   // its folder
+    PresetMeta meta;
+    ViewDesc view;
+    std::vector<ParamDesc> params;
+    std::vector<ImageDesc> images;
+    std::vector<BufferDesc> buffers;
+    std::vector<MeshDesc> meshes;
+    std::vector<PassDesc> passes;
+    std::string output;  // image shown / written by render
+    SourceLoc output_loc;
+    std::vector<TestDesc> tests;
+
+    const ImageDesc* find_image(const std::string& n) const;
+    const BufferDesc* find_buffer(const std::string& n) const;
+    const MeshDesc* find_mesh(const std::string& n) const;
+    const ParamDesc* find_param(const std::string& n) const;
+    const PassDesc* find_pass(const std::string& n) const;
+};
+
+} // namespace pl::graph
