@@ -185,6 +185,10 @@ struct PassDesc {
 
     // Repetition: run N times with the iteration index in the shader (pl_iteration).
     SizeExpr repeat;  // empty = 1
+    // Ping-pong: pairs of image names whose roles swap after every iteration, so iteration i
+    // reads what iteration i-1 wrote (blur iterations, Jacobi steps). ["a","b"] = one pair.
+    std::vector<std::string> swap;
+    SourceLoc swap_loc;
 
     // blit / copy / mips / clear.
     std::string src, dst;              // blit, copy
@@ -232,11 +236,18 @@ struct TestDesc {
     int frames = 1;
     double step = 1.0 / 60.0;
     std::map<std::string, Value> set;  // param overrides
+    std::optional<OrbitCamera> camera; // overrides [view].camera.orbit
     std::string pass;                  // image to check; empty = output
     std::string golden;                // path relative to preset
     std::map<std::string, double> tolerance;
     std::vector<CheckDesc> checks;     // probes and properties
     std::vector<std::string> requires_features;
+};
+
+// What a pass reads and writes, by resource name (known after shader reflection); used by the
+// planner and by `passlab graph --dot`.
+struct PassIO {
+    std::vector<std::string> reads, writes;
 };
 
 struct GraphDesc {

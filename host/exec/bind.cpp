@@ -1,0 +1,235 @@
+#include "exec/bind.hpp"
+
+#include "vk/formats.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <regex>
+
+namespace fs = std::filesystem;
+
+namespace pl::exec {
+
+using graph::ImageKind;
+using shader::BindingType;
+
+graph::SizeEnv size_env(const graph::GraphDesc& desc, std::array<int, 2> view) {
+    graph::SizeEnv env;
+    env.view_w = view[0];
+    env.view_h = view[1];
+    for (const auto& p : desc.params) env.params[p.name] = p.value[0];
+    return env;
+}
+
+SourceLoc find_declaration(const std::vector<fs::path>& files, const std::string& name) {
+    std::regex word("\\b" + name + "\\b");
+    for (const auto& f : files) {
+        std::ifstream in(f);
+        std::string line;
+        for (int n = 1; std::getline(in, line); ++n) {
+            if (line.find("uniform") == std::string::npos && line.find("buffer") == std::string::npos)
+                continue;
+            std::smatch m;
+            if (std::regex_search(line, m, word))
+                return {fs::proximate(f).string(), n, static_cast<int>(m.position(0)) + 1};
+        }
+    }
+    return {};
+}
+
+namespace {
+
+std::string underlying(const graph::GraphDesc& d, const std::string& name) {
+    const graph::ImageDesc* img = d.find_image(name);
+    return img && !img->alias.empty() ? img->alias : name;
+}
+
+Access storage_access(const shader::Binding& b) {
+    if (b.non_writable) return Access::storage_read;
+    if (b.non_readable) return Access::storage_write;
+    return Access::storage_read_write;
+}
+
+// Does a sampler/image declaration of this dimension fit the image's kind?
+bool dim_matches(const shader::Binding& b, const graph::ImageDesc& img) {
+    switch (b.dim) {
+    case shader::ImageDim::cube: return img.kind == ImageKind::cube;
+    case shader::ImageDim::d3: return img.kind == ImageKind::tex3d;
+    case shader::ImageDim::d2:
+        if (b.arrayed) return img.kind == ImageKind::tex2d_array || img.kind == ImageKind::cube;
+        return img.kind == ImageKind::tex2d || (img.kind == ImageKind::tex2d_array && img.layers == 1);
+    default: return true;
+    }
+}
+
+const char* kind_name(ImageKind k) {
+    switch (k) {
+    case ImageKind::tex2d: return "2d";
+    case ImageKind::tex2d_array: return "2d-array";
+    case ImageKind::tex3d: return "3d";
+    case ImageKind::cube: return "cube";
+    }
+    return "?";
+}
+
+} // namespace
+
+Status bind_pass(const graph::GraphDesc& desc, CompiledPass& cp) {
+    const graph::PassDesc& pd = *cp.desc;
+    auto err = [&](const std::string& msg, const std::string& name) {
+        Error e = make_error(msg, find_declaration(cp.program.dependencies, name));
+        if (!e.loc.known()) e.loc = pd.loc, e.source_line = read_source_line(pd.loc.file, pd.loc.line);
+        e.pass = pd.name;
+        e.resource = name;
+        return e;
+    };
+    std::vector<std::string> reads, writes;
+
+    for (const auto& b : cp.program.reflection.bindings) {
+        BoundResource br;
+        br.binding = b;
+        if (b.block_name == "PasslabFrame") {
+            br.kind = BoundResource::Kind::frame;
+            br.access = Access::uniform_read;
+            cp.bindings.push_back(br);
+            continue;
+        }
+        if (b.block_name == "PasslabParams") {
+            br.kind = BoundResource::Kind::params;
+            br.access = Access::uniform_read;
+            cp.bindings.push_back(br);
+            continue;
+        }
+        bool is_buffer = b.type == BindingType::uniform_buffer || b.type == BindingType::storage_buffer;
+        std::string name = b.name;
+        if (is_buffer && !desc.find_buffer(name) && !b.block_name.empty() && desc.find_buffer(b.block_name))
+            name = b.block_name;
+
+        if (b.type == BindingType::sampler) return err("separate 'sampler' objects are not supported; declare a combined sampler (sampler2D ...) named after the image", name);
+
+        // History: <name>_prev reads last frame's contents of a history image or buffer.
+        bool prev = false;
+        if (name.size() > 5 && name.ends_with("_prev")) {
+            std::string base = name.substr(0, name.size() - 5);
+            const graph::ImageDesc* hi = desc.find_image(base);
+            const graph::BufferDesc* hb = desc.find_buffer(base);
+            if ((hi && hi->history) || (hb && hb->history)) {
+                prev = true;
+                name = base;
+            }
+        }
+
+        if (is_buffer) {
+            const graph::BufferDesc* buf = desc.find_buffer(name);
+            if (!buf) {
+                std::vector<std::string> names;
+                for (const auto& x : desc.buffers) names.push_back(x.name);
+                Error e = err("shader block '" + name + "' is not a buffer of the graph", name);
+                std::string near = nearest_name(name, names);
+                if (!near.empty()) e.hint = "did you mean '" + near + "'?";
+                std::string all;
+                for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+                e.notes.push_back(names.empty() ? "the graph declares no [buffers]" : "buffers: " + all);
+                return e;
+            }
+            br.kind = prev ? BoundResource::Kind::buffer_prev : BoundResource::Kind::buffer;
+            br.resource = name;
+            br.access = b.type == BindingType::uniform_buffer ? Access::uniform_read : storage_access(b);
+            if (prev && br.access != Access::uniform_read && br.access != Access::storage_read)
+                br.access = Access::storage_read;
+        } else {
+            const graph::ImageDesc* img = desc.find_image(name);
+            if (!img) {
+                std::vector<std::string> names;
+                for (const auto& x : desc.images) {
+                    names.push_back(x.name);
+                    if (x.history) names.push_back(x.name + "_prev");
+                }
+                Error e = err("shader resource '" + name + "' is not an image of the graph", name);
+                std::string near = nearest_name(name, names);
+                if (!near.empty()) e.hint = "did you mean '" + near + "'?";
+                std::string all;
+                for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+                e.notes.push_back(names.empty() ? "the graph declares no [images]" : "images: " + all);
+                return e;
+            }
+            const vk::FormatInfo* fi = vk::find_format(img->format);
+            if (!dim_matches(b, *img))
+                return err("'" + name + "' is a " + kind_name(img->kind) +
+                               " image but the shader declares a different dimension", name);
+            if (fi && b.is_integer != fi->is_integer)
+                return err(std::string("'") + name + "' has format " + img->format + " but the shader declares " +
+                               (b.is_integer ? "an integer" : "a float") + " sampler/image", name);
+            br.kind = prev ? BoundResource::Kind::image_prev : BoundResource::Kind::image;
+            br.resource = name;
+            if (b.type == BindingType::storage_image) {
+                if (!fi || std::string(fi->glsl_storage).empty())
+                    return err("image '" + name + "' has format " + img->format +
+                                   ", which cannot be a storage image", name);
+                if (!b.storage_format.empty() && b.storage_format != fi->glsl_storage) {
+                    Error e = err("storage image '" + name + "' is declared " + b.storage_format +
+                                      " in the shader but the image's format is " + img->format, name);
+                    e.hint = std::string("declare it layout(") + fi->glsl_storage + ")";
+                    return e;
+                }
+                br.access = prev ? Access::storage_read : storage_access(b);
+            } else {
+                br.access = Access::sampled;
+            }
+        }
+
+        std::string res = prev ? br.resource + "_prev" : underlying(desc, br.resource);
+        bool w = br.access == Access::storage_write || br.access == Access::storage_read_write;
+        bool r = br.access != Access::storage_write;
+        if (r) reads.push_back(res);
+        if (w) writes.push_back(res);
+        cp.bindings.push_back(br);
+    }
+
+    // Attachments and transfer operands declared in the graph.
+    for (const auto& t : pd.targets) {
+        writes.push_back(underlying(desc, t.image));
+        if (!t.resolve.empty()) writes.push_back(underlying(desc, t.resolve));
+    }
+    if (pd.depth) {
+        if (pd.depth->write) writes.push_back(underlying(desc, pd.depth->target.image));
+        else reads.push_back(underlying(desc, pd.depth->target.image));
+    }
+    if (!pd.src.empty()) reads.push_back(underlying(desc, pd.src));
+    if (!pd.dst.empty()) writes.push_back(underlying(desc, pd.dst));
+    if (!pd.image.empty()) {
+        // mips reads level 0 and writes the rest; clear only writes.
+        if (pd.kind == graph::PassKind::mips) reads.push_back(underlying(desc, pd.image));
+        writes.push_back(underlying(desc, pd.image));
+    }
+    if (!pd.indirect.empty()) reads.push_back(pd.indirect);
+    if (!pd.mesh.empty()) {}  // meshes are immutable host data: no ordering constraint
+
+    // Feedback loop: sampling an image while rendering into it is undefined behaviour.
+    auto sampled = [&](const std::string& n) {
+        return std::any_of(cp.bindings.begin(), cp.bindings.end(), [&](const BoundResource& br) {
+            return br.kind == BoundResource::Kind::image && br.access == Access::sampled &&
+                   underlying(desc, br.resource) == underlying(desc, n);
+        });
+    };
+    for (const auto& t : pd.targets)
+        if (sampled(t.image))
+            return err("pass samples image '" + t.image + "' while rendering into it (feedback loop)", t.image);
+    if (pd.depth && pd.depth->write && sampled(pd.depth->target.image))
+        return err("pass samples depth image '" + pd.depth->target.image +
+                       "' while writing it; set depth.write = false to test and sample it", pd.depth->target.image);
+
+    auto uniq = [](std::vector<std::string>& v) {
+        std::vector<std::string> out;
+        for (auto& s : v)
+            if (std::find(out.begin(), out.end(), s) == out.end()) out.push_back(s);
+        v = std::move(out);
+    };
+    uniq(reads);
+    uniq(writes);
+    cp.io.reads = reads;
+    cp.io.writes = writes;
+    return ok_status();
+}
+
+} // namespace pl::exec

@@ -1,0 +1,185 @@
+#include "exec/build.hpp"
+
+#include "exec/bind.hpp"
+#include "exec/preamble.hpp"
+#include "graph/parse.hpp"
+#include "graph/sizeexpr.hpp"
+#include "graph/validate.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace fs = std::filesystem;
+
+namespace pl::exec {
+
+fs::path passes_dir() {
+    if (const char* root = std::getenv("PASSLAB_ROOT")) return fs::path(root) / "passes";
+    return fs::path(PASSLAB_SOURCE_DIR) / "passes";
+}
+
+fs::path presets_dir() {
+    if (const char* root = std::getenv("PASSLAB_ROOT")) return fs::path(root) / "presets";
+    return fs::path(PASSLAB_SOURCE_DIR) / "presets";
+}
+
+Result<fs::path> resolve_preset(const std::string& arg) {
+    std::error_code ec;
+    fs::path p(arg);
+    if (fs::is_directory(p, ec)) {
+        if (fs::exists(p / "preset.toml", ec)) return fs::absolute(p / "preset.toml");
+        Error e = make_error("folder '" + arg + "' has no preset.toml");
+        e.code = ExitCode::user;
+        return e;
+    }
+    if (fs::is_regular_file(p, ec)) return fs::absolute(p);
+    // A name: family/name or name, under presets/.
+    fs::path root = presets_dir();
+    if (fs::exists(root / arg / "preset.toml", ec)) return root / arg / "preset.toml";
+    std::vector<std::string> names;
+    if (fs::is_directory(root, ec)) {
+        for (const auto& fam : fs::directory_iterator(root, ec)) {
+            if (!fam.is_directory()) continue;
+            for (const auto& pre : fs::directory_iterator(fam.path(), ec)) {
+                if (!fs::exists(pre.path() / "preset.toml", ec)) continue;
+                std::string full = fam.path().filename().string() + "/" + pre.path().filename().string();
+                if (pre.path().filename() == arg) return pre.path() / "preset.toml";
+                names.push_back(full);
+            }
+        }
+    }
+    Error e = make_error("no preset '" + arg + "': not a folder with preset.toml, a .toml file, or "
+                         "a preset name");
+    std::string near = nearest_name(arg, names);
+    if (!near.empty()) e.hint = "did you mean '" + near + "'?";
+    e.notes.push_back("`passlab list` shows the presets");
+    return e;
+}
+
+namespace {
+
+// Looks for `file` in the overlay folders, the preset folder, then passes/.
+fs::path find_shader(const std::vector<fs::path>& search, const std::string& file) {
+    std::error_code ec;
+    for (const auto& d : search)
+        if (fs::exists(d / file, ec)) return d / file;
+    return search.size() > 1 ? search[search.size() - 2] / file : fs::path(file);
+}
+
+Status compile_pass(CompiledGraph& g, CompiledPass& cp, const BuildOptions& opt) {
+    const graph::PassDesc& pd = *cp.desc;
+    std::vector<shader::StageInput> stages;
+    auto add = [&](shader::Stage st, const graph::ShaderRef& ref) {
+        if (ref.empty()) return;
+        fs::path f = find_shader(g.search_dirs, ref.file);
+        stages.push_back({st, f, fs::proximate(f).string(), {}});
+    };
+    switch (pd.kind) {
+    case graph::PassKind::fullscreen:
+        if (pd.vertex.empty())
+            stages.push_back({shader::Stage::vertex, "<passlab fullscreen.vert>", "<passlab fullscreen.vert>",
+                              fullscreen_vertex_source()});
+        else
+            add(shader::Stage::vertex, pd.vertex);
+        add(shader::Stage::fragment, pd.fragment);
+        break;
+    case graph::PassKind::draw:
+        add(shader::Stage::vertex, pd.vertex);
+        add(shader::Stage::tess_control, pd.tess_control);
+        add(shader::Stage::tess_eval, pd.tess_eval);
+        add(shader::Stage::geometry, pd.geometry);
+        add(shader::Stage::fragment, pd.fragment);
+        break;
+    case graph::PassKind::compute: add(shader::Stage::compute, pd.compute); break;
+    default: return ok_status();  // transfer kinds have no shaders
+    }
+
+    shader::CompileOptions co;
+    for (const auto& d : g.search_dirs) co.include_dirs.push_back(d);
+    co.preamble = preamble_source(g.desc.params);
+    co.defines = pd.defines;
+    co.cache_dir = opt.cache_dir;
+    auto prog = shader::compile_program(stages, co);
+    if (!prog) {
+        Error e = prog.error();
+        if (e.pass.empty()) e.pass = pd.name;
+        return e;
+    }
+    cp.program = std::move(prog.value());
+    for (const auto& d : cp.program.dependencies) g.dependencies.push_back(d);
+    return ok_status();
+}
+
+} // namespace
+
+Result<CompiledGraph> build_graph(const fs::path& preset_toml, const BuildOptions& opt) {
+    auto parsed = graph::parse_graph_file(preset_toml);
+    if (!parsed) return parsed.error();
+    CompiledGraph g;
+    g.desc = std::move(parsed.value());
+    g.dependencies.push_back(g.desc.file);
+
+    for (const auto& s : opt.set)
+        if (auto st = apply_param_override(g.desc.params, s); !st) return st.error();
+    for (const auto& [name, value] : opt.set_values)
+        if (auto st = apply_param_value(g.desc.params, name, value, {}); !st) return st.error();
+    if (opt.size) g.desc.view.size = *opt.size;
+    g.view = g.desc.view.size;
+
+    for (const auto& d : opt.overlay_dirs) g.search_dirs.push_back(fs::absolute(d));
+    g.search_dirs.push_back(g.desc.dir);
+    g.search_dirs.push_back(passes_dir());
+
+    graph::ValidateOptions vo;
+    vo.search_dirs = g.search_dirs;
+    if (auto st = graph::validate_graph(g.desc, vo); !st) return st.error();
+
+    g.param_layout = layout_params(g.desc.params);
+    graph::SizeEnv env = size_env(g.desc, g.view);
+
+    g.passes.resize(g.desc.passes.size());
+    for (size_t i = 0; i < g.desc.passes.size(); ++i) {
+        CompiledPass& cp = g.passes[i];
+        cp.desc = &g.desc.passes[i];
+        if (!cp.desc->repeat.empty()) {
+            auto r = graph::eval_scalar(cp.desc->repeat, env);
+            if (!r) {
+                Error e = r.error();
+                e.pass = cp.desc->name;
+                return e;
+            }
+            if (*r < 1 || *r > 4096) {
+                Error e = make_error("repeat evaluates to " + std::to_string(*r) +
+                                         "; it must be between 1 and 4096",
+                                     cp.desc->repeat.loc);
+                e.pass = cp.desc->name;
+                return e;
+            }
+            cp.repeat = static_cast<int>(*r);
+        }
+        if (auto st = compile_pass(g, cp, opt); !st) return st.error();
+        if (auto st = bind_pass(g.desc, cp); !st) return st.error();
+    }
+
+    for (const auto& img : g.desc.images)
+        if (!img.file.empty()) g.dependencies.push_back(g.desc.dir / img.file);
+    for (const auto& m : g.desc.meshes)
+        if (!m.file.empty()) g.dependencies.push_back(g.desc.dir / m.file);
+    std::sort(g.dependencies.begin(), g.dependencies.end());
+    g.dependencies.erase(std::unique(g.dependencies.begin(), g.dependencies.end()), g.dependencies.end());
+
+    std::vector<PlanPass> plan;
+    for (const auto& cp : g.passes) {
+        if (!cp.desc->enabled) {
+            plan.push_back({cp.desc->name, cp.desc->loc, {}, {}});
+            continue;
+        }
+        plan.push_back({cp.desc->name, cp.desc->loc, cp.io.reads, cp.io.writes});
+    }
+    auto order = order_passes(plan);
+    if (!order) return order.error();
+    g.order = std::move(order.value());
+    return g;
+}
+
+} // namespace pl::exec

@@ -1,0 +1,237 @@
+#include "exec/executor.hpp"
+
+#include "exec/barriers.hpp"
+#include "exec/bind.hpp"
+#include "exec/frame_block.hpp"
+#include "exec/texels.hpp"
+#include "scene/camera.hpp"
+#include "vk/check.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+
+namespace pl::exec {
+
+namespace {
+
+
+
+
+scene::OrbitCamera to_camera(const graph::ViewDesc& v, const graph::OrbitCamera& o) {
+    scene::OrbitCamera c;
+    c.target = {o.target[0], o.target[1], o.target[2]};
+    c.distance = o.distance;
+    c.yaw_deg = o.yaw;
+    c.pitch_deg = o.pitch;
+    c.fov_deg = v.fov;
+    c.near = v.near;
+    c.far = v.far;
+    c.ortho = v.ortho;
+    c.ortho_height = v.ortho_height;
+    return c;
+}
+
+} // namespace
+
+Executor::~Executor() {
+    if (ctx_.device()) vkDeviceWaitIdle(ctx_.device());
+}
+
+Result<std::unique_ptr<Executor>> Executor::create(vk::Context& ctx, CompiledGraph graph) {
+    std::unique_ptr<Executor> ex(new Executor(ctx));
+    ex->graph_ = std::make_unique<CompiledGraph>(std::move(graph));
+    CompiledGraph& g = *ex->graph_;
+    VkDevice dev = ctx.device();
+
+    auto res = create_resources(ctx, g);
+    if (!res) return res.error();
+    ex->res_ = std::move(res.value());
+
+    std::map<VkDescriptorType, uint32_t> counts;
+    uint32_t max_sets = 0;
+    for (const auto& cp : g.passes) {
+        ctx.set_label("pass '" + cp.desc->name + "' (pipeline)");
+        auto pp = create_pass_pipeline(ctx, g, cp, ex->res_);
+        if (!pp) return pp.error();
+        for (const auto& b : cp.program.reflection.bindings) counts[descriptor_type(b.type)] += b.count * cp.repeat;
+        max_sets += static_cast<uint32_t>(pp->set_layouts.size()) * cp.repeat;
+        ex->pipelines_.push_back(std::move(pp.value()));
+    }
+    ctx.set_label("");
+
+    ex->frame_ubo_ = vk::create_buffer(ctx, sizeof(FrameBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+    ex->params_ubo_ = vk::create_buffer(ctx, std::max<uint32_t>(16, g.param_layout.size),
+                                        VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+
+    std::vector<VkDescriptorPoolSize> sizes;
+    for (auto [type, n] : counts) sizes.push_back({type, n});
+    if (sizes.empty()) sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1});
+    VkDescriptorPoolCreateInfo dpci{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
+                                    .maxSets = std::max(1u, max_sets),
+                                    .poolSizeCount = static_cast<uint32_t>(sizes.size()),
+                                    .pPoolSizes = sizes.data()};
+    VkDescriptorPool pool;
+    VK_CHECK(vkCreateDescriptorPool(dev, &dpci, nullptr, &pool));
+    ex->pool_ = vk::UniqueDescriptorPool(dev, pool);
+
+    VkCommandPoolCreateInfo cpci{.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
+                                 .flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT,
+                                 .queueFamilyIndex = ctx.queue_family()};
+    VkCommandPool cmd_pool;
+    VK_CHECK(vkCreateCommandPool(dev, &cpci, nullptr, &cmd_pool));
+    ex->cmd_pool_ = vk::UniqueCommandPool(dev, cmd_pool);
+    VkCommandBufferAllocateInfo cai{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
+                                    .commandPool = cmd_pool,
+                                    .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
+                                    .commandBufferCount = 1};
+    VK_CHECK(vkAllocateCommandBuffers(dev, &cai, &ex->cmd_));
+    VkFenceCreateInfo fci{.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence fence;
+    VK_CHECK(vkCreateFence(dev, &fci, nullptr, &fence));
+    ex->fence_ = vk::UniqueFence(dev, fence);
+
+    uint32_t qf_count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(ctx.physical(), &qf_count, nullptr);
+    std::vector<VkQueueFamilyProperties> qfs(qf_count);
+    vkGetPhysicalDeviceQueueFamilyProperties(ctx.physical(), &qf_count, qfs.data());
+    if (qfs[ctx.queue_family()].timestampValidBits > 0 && !g.passes.empty()) {
+        VkQueryPoolCreateInfo qci{.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO,
+                                  .queryType = VK_QUERY_TYPE_TIMESTAMP,
+                                  .queryCount = static_cast<uint32_t>(2 * g.passes.size())};
+        VkQueryPool qp;
+        VK_CHECK(vkCreateQueryPool(dev, &qci, nullptr, &qp));
+        ex->queries_ = vk::UniqueQueryPool(dev, qp);
+        ex->timestamps_ = true;
+    }
+    return ex;
+}
+
+Status Executor::render(const FrameInput& in) {
+    CompiledGraph& g = *graph_;
+    frame_parity_ = frames_rendered_ & 1;
+
+    // Frame block.
+    FrameBlock fb{};
+    const float w = static_cast<float>(g.view[0]), h = static_cast<float>(g.view[1]);
+    scene::OrbitCamera cam = to_camera(g.desc.view, in.camera ? *in.camera : g.desc.view.orbit);
+    fb.view = cam.view();
+    fb.proj = cam.projection(w / h);
+    // Jitter in pixels -> clip-space offset (2 px = full NDC width / w ... per unit of w).
+    fb.proj[2][0] += in.jitter.x * 2.0f / w;
+    fb.proj[2][1] += in.jitter.y * 2.0f / h;
+    fb.view_proj = fb.proj * fb.view;
+    fb.inv_view = glm::inverse(fb.view);
+    fb.inv_proj = glm::inverse(fb.proj);
+    fb.inv_view_proj = glm::inverse(fb.view_proj);
+    fb.prev_view_proj = frames_rendered_ == 0 ? fb.view_proj : prev_view_proj_;
+    fb.camera_pos = glm::vec4(cam.position(), 1.0f);
+    fb.resolution = {w, h, 1.0f / w, 1.0f / h};
+    fb.mouse = in.mouse;
+    fb.jitter = {in.jitter.x, in.jitter.y, 0.0f, 0.0f};
+    fb.time = static_cast<float>(in.time);
+    fb.delta = static_cast<float>(in.delta);
+    fb.index = in.index;
+    fb.aspect = w / h;
+    std::memcpy(frame_ubo_.mapped, &fb, sizeof fb);
+    prev_view_proj_ = fb.view_proj;
+    auto params = pack_params(g.desc.params, g.param_layout);
+    std::memcpy(params_ubo_.mapped, params.data(), std::min<size_t>(params.size(), params_ubo_.size));
+
+    VK_CHECK(vkResetDescriptorPool(ctx_.device(), pool_, 0));
+    VK_CHECK(vkResetCommandBuffer(cmd_, 0));
+    VkCommandBufferBeginInfo bi{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+                                .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+    VK_CHECK(vkBeginCommandBuffer(cmd_, &bi));
+    Status st = record_frame(cmd_, in);
+    VK_CHECK(vkEndCommandBuffer(cmd_));
+    ctx_.set_label("");
+    if (!st) return st;
+
+    VkSubmitInfo si{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO, .commandBufferCount = 1, .pCommandBuffers = &cmd_};
+    uint64_t serial = ctx_.begin_submit();
+    VK_CHECK(vkQueueSubmit(ctx_.queue(), 1, &si, fence_));
+    if (auto w = ctx_.wait(fence_, timeout_, "frame " + std::to_string(in.index)); !w) {
+        (void)fence_.release();  // the GPU may still run the shader: never destroy what it uses
+        return w;
+    }
+    VkFence f = fence_;
+    VK_CHECK(vkResetFences(ctx_.device(), 1, &f));
+    ctx_.collect(serial);
+    ++frames_rendered_;
+
+    timings_.clear();
+    if (timestamps_) {
+        std::vector<uint64_t> ts(2 * g.passes.size(), 0);
+        VkResult r = vkGetQueryPoolResults(ctx_.device(), queries_, 0, static_cast<uint32_t>(ts.size()),
+                                           ts.size() * sizeof(uint64_t), ts.data(), sizeof(uint64_t),
+                                           VK_QUERY_RESULT_64_BIT);
+        double period_ms = ctx_.properties().limits.timestampPeriod * 1e-6;
+        for (size_t i : g.order) {
+            double ms = r == VK_SUCCESS ? static_cast<double>(ts[2 * i + 1] - ts[2 * i]) * period_ms : 0.0;
+            timings_.push_back({g.passes[i].desc->name, ms});
+        }
+    }
+    return ok_status();
+}
+
+Status Executor::record_frame(VkCommandBuffer cb, const FrameInput&) {
+    CompiledGraph& g = *graph_;
+    if (timestamps_) vkCmdResetQueryPool(cb, queries_, 0, static_cast<uint32_t>(2 * g.passes.size()));
+    ctx_.set_label("frame start");
+
+    // Per-frame clears and first-frame history initialisation, derived like any other write.
+    BarrierBatch batch;
+    struct ClearOp {
+        PhysImage* img;
+        std::array<float, 4> color;
+    };
+    std::vector<ClearOp> clears;
+    for (auto& [name, gi] : res_.images) {
+        if (!gi.desc->alias.empty()) continue;
+        std::array<float, 4> value = gi.desc->clear.value_or(std::array<float, 4>{0, 0, 0, 0});
+        if (gi.desc->clear) clears.push_back({gi.phys[static_cast<size_t>(frame_parity_)].get(), value});
+        if (gi.history && frames_rendered_ == 0)
+            clears.push_back({gi.phys[static_cast<size_t>(1 - frame_parity_)].get(), value});
+    }
+    for (auto& c : clears) require(batch, *c.img, usage_of(Access::transfer_dst, 0), true);
+    std::vector<PhysBuffer*> fills;
+    for (auto& [name, gb] : res_.buffers)
+        if (gb.desc->clear) {
+            PhysBuffer* pb = gb.phys[static_cast<size_t>(frame_parity_)].get();
+            require(batch, *pb, usage_of(Access::transfer_dst, 0));
+            fills.push_back(pb);
+        }
+    batch.flush(cb);
+    for (auto& c : clears) {
+        auto range = c.img->image.full_range();
+        if (c.img->image.aspect() & VK_IMAGE_ASPECT_DEPTH_BIT) {
+            VkClearDepthStencilValue v{c.color[0], 0};
+            vkCmdClearDepthStencilImage(cb, c.img->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1, &range);
+        } else {
+            VkClearColorValue v;
+            std::memcpy(v.float32, c.color.data(), sizeof v.float32);
+            vkCmdClearColorImage(cb, c.img->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1, &range);
+        }
+    }
+    for (auto& [name, gb] : res_.buffers)
+        if (gb.desc->clear)
+            vkCmdFillBuffer(cb, gb.phys[static_cast<size_t>(frame_parity_)]->buffer.buffer, 0, VK_WHOLE_SIZE,
+                            *gb.desc->clear);
+
+    for (size_t i : g.order) {
+        const CompiledPass& cp = g.passes[i];
+        ctx_.set_label("pass '" + cp.desc->name + "'");
+        if (timestamps_)
+            vkCmdWriteTimestamp2(cb, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, queries_, static_cast<uint32_t>(2 * i));
+        for (int it = 0; cp.desc->enabled && it < cp.repeat; ++it)
+            if (auto s = record_pass(cb, i, it); !s) return s;
+        if (timestamps_)
+            vkCmdWriteTimestamp2(cb, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, queries_, static_cast<uint32_t>(2 * i + 1));
+    }
+    return ok_status();
+}
+
+} // namespace pl::exec

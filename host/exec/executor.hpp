@@ -1,0 +1,73 @@
+// The one generic executor: owns a built graph's GPU resources and pipelines and runs frames.
+// Each frame: fill the frame and params blocks, then for every pass in planned order and every
+// repeat iteration derive barriers from the pass's uses (planner), write its descriptors by
+// name, and record its kind (fullscreen, draw, compute, blit, copy, mips, clear).
+#pragma once
+
+#include "exec/build.hpp"
+#include "exec/pipelines.hpp"
+#include "exec/resources.hpp"
+#include "image/image.hpp"
+#include "vk/context.hpp"
+
+#include <glm/glm.hpp>
+
+#include <chrono>
+#include <memory>
+#include <optional>
+
+namespace pl::exec {
+
+struct FrameInput {
+    double time = 0.0;
+    double delta = 1.0 / 60.0;
+    int index = 0;
+    glm::vec4 mouse{0.0f};
+    std::optional<graph::OrbitCamera> camera;  // default: [view].camera
+    glm::vec2 jitter{0.0f};                    // sub-pixel offset in pixels
+};
+
+struct PassTiming {
+    std::string name;
+    double gpu_ms = 0.0;
+};
+
+class Executor {
+  public:
+    static Result<std::unique_ptr<Executor>> create(vk::Context& ctx, CompiledGraph graph);
+    ~Executor();
+
+    // Records, submits and waits for one frame (watchdog: `timeout`).
+    Status render(const FrameInput& in);
+    // Reads back an image (its current contents, after the last frame) as RGBA float.
+    Result<image::Image> read(const std::string& image, int mip = 0, int layer = 0);
+
+    const CompiledGraph& graph() const { return *graph_; }
+    const std::vector<PassTiming>& timings() const { return timings_; }
+    void set_timeout(std::chrono::milliseconds t) { timeout_ = t; }
+
+  private:
+    explicit Executor(vk::Context& ctx) : ctx_(ctx) {}
+    struct Impl;
+    Status record_frame(VkCommandBuffer cb, const FrameInput& in);
+    Status record_pass(VkCommandBuffer cb, size_t pass, int iteration);
+
+    vk::Context& ctx_;
+    std::unique_ptr<CompiledGraph> graph_;
+    GraphResources res_;
+    std::vector<PassPipeline> pipelines_;
+    vk::Buffer frame_ubo_, params_ubo_;
+    vk::UniqueDescriptorPool pool_;
+    vk::UniqueCommandPool cmd_pool_;
+    VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+    vk::UniqueFence fence_;
+    vk::UniqueQueryPool queries_;
+    bool timestamps_ = false;
+    std::vector<PassTiming> timings_;
+    int frame_parity_ = 0;  // which physical image of a history pair is "current"
+    int frames_rendered_ = 0;
+    glm::mat4 prev_view_proj_{1.0f};
+    std::chrono::milliseconds timeout_{std::chrono::seconds(20)};
+};
+
+} // namespace pl::exec

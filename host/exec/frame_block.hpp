@@ -1,0 +1,82 @@
+// The per-frame uniform block every shader sees as `frame`, defined once here for both sides:
+// the C++ struct (std140) and the GLSL text generated from kFrameBlockGlsl; static_asserts keep
+// them from drifting apart.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <cstdint>
+
+namespace pl::exec {
+
+struct FrameBlock {
+    glm::mat4 view;            // world -> view
+    glm::mat4 proj;            // view -> clip (Vulkan, y flipped, depth 0..1), jitter applied
+    glm::mat4 view_proj;
+    glm::mat4 inv_view;
+    glm::mat4 inv_proj;
+    glm::mat4 inv_view_proj;
+    glm::mat4 prev_view_proj;  // last frame's view_proj (motion vectors, TAA reprojection)
+    glm::vec4 camera_pos;      // xyz world position, w = 1
+    glm::vec4 resolution;      // w, h, 1/w, 1/h of the pass's render area (view size)
+    glm::vec4 mouse;           // Shadertoy iMouse: xy current (pixels) while down, zw click position
+    glm::vec4 jitter;          // xy this frame's sub-pixel jitter in pixels, zw last frame's
+    float time;                // seconds
+    float delta;               // seconds since last frame (the fixed step when headless)
+    int32_t index;             // frame number, 0 for the first frame
+    float aspect;              // w / h
+};
+
+static_assert(offsetof(FrameBlock, camera_pos) == 448);
+static_assert(offsetof(FrameBlock, resolution) == 464);
+static_assert(offsetof(FrameBlock, mouse) == 480);
+static_assert(offsetof(FrameBlock, jitter) == 496);
+static_assert(offsetof(FrameBlock, time) == 512);
+static_assert(offsetof(FrameBlock, index) == 520);
+static_assert(sizeof(FrameBlock) == 528);
+
+inline constexpr uint32_t kFrameBinding = 0;   // set 0
+inline constexpr uint32_t kParamsBinding = 1;  // set 0
+
+// Mirrors FrameBlock member for member; std140 gives the offsets asserted above.
+inline constexpr const char* kFrameBlockGlsl = R"(layout(set = 0, binding = 0, std140) uniform PasslabFrame {
+    mat4 view;
+    mat4 proj;
+    mat4 view_proj;
+    mat4 inv_view;
+    mat4 inv_proj;
+    mat4 inv_view_proj;
+    mat4 prev_view_proj;
+    vec4 camera_pos;
+    vec4 resolution;
+    vec4 mouse;
+    vec4 jitter;
+    float time;
+    float delta;
+    int index;
+    float aspect;
+} frame;
+)";
+
+// Push constants: which iteration of a repeated pass is running.
+struct PushBlock {
+    int32_t iteration;  // 0 .. count-1
+    int32_t count;      // the pass's repeat count
+    int32_t layer;      // layer/face being rendered (== iteration for layer = "iteration")
+    int32_t pad;
+};
+static_assert(sizeof(PushBlock) == 16);
+
+inline constexpr const char* kPushBlockGlsl = R"(layout(push_constant) uniform PasslabPush {
+    int iteration;
+    int count;
+    int layer;
+    int pad_;
+} pl_push;
+#define pl_iteration pl_push.iteration
+#define pl_iteration_count pl_push.count
+#define pl_layer pl_push.layer
+)";
+
+} // namespace pl::exec

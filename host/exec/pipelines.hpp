@@ -1,0 +1,33 @@
+// Pipelines of one pass, built from its description and its shaders' reflection: descriptor
+// set layouts and push constants come from SPIR-V, raster state from the graph.
+#pragma once
+
+#include "exec/build.hpp"
+#include "exec/resources.hpp"
+#include "vk/context.hpp"
+
+#include <vector>
+
+namespace pl::exec {
+
+struct PassPipeline {
+    std::vector<vk::UniqueSetLayout> set_layouts;  // index = set number
+    vk::UniquePipelineLayout layout;
+    vk::UniquePipeline pipeline;
+    VkPipelineBindPoint bind_point = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    uint32_t push_stages = 0;  // VkShaderStageFlags, 0 = no push constants
+};
+
+// nullptr-pipeline result for transfer kinds. Errors (unsupported blend on this device, sample
+// count mismatch between targets) name the pass.
+Result<PassPipeline> create_pass_pipeline(vk::Context& ctx, const CompiledGraph& g, const CompiledPass& pass,
+                                          const GraphResources& res);
+
+// Shader stage bits of the reflection (1 << shader::Stage) as Vulkan flags.
+VkShaderStageFlags vk_stages(uint32_t stage_bits);
+VkPipelineStageFlags2 pipeline_stages(uint32_t stage_bits);
+VkDescriptorType descriptor_type(shader::BindingType t);
+// An error about a pass, located at its [[pass]] header.
+Error pass_error(const graph::PassDesc& pd, const std::string& msg);
+
+} // namespace pl::exec

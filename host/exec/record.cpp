@@ -1,0 +1,461 @@
+// Recording of one pass iteration: uses -> barriers (planner), descriptors by name, then the
+// pass kind's commands. The only per-kind code in the executor.
+#include "exec/barriers.hpp"
+#include "exec/bind.hpp"
+#include "exec/executor.hpp"
+#include "exec/frame_block.hpp"
+#include "exec/texels.hpp"
+#include "vk/check.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+
+namespace pl::exec {
+
+namespace {
+
+
+
+
+VkExtent2D mip_extent(const vk::ImageInfo& info, uint32_t mip) {
+    return {std::max(1u, info.extent.width >> mip), std::max(1u, info.extent.height >> mip)};
+}
+
+} // namespace
+
+Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
+    CompiledGraph& g = *graph_;
+    const CompiledPass& cp = g.passes[pass_index];
+    const graph::PassDesc& pd = *cp.desc;
+    PassPipeline& pp = pipelines_[pass_index];
+
+    // Names -> physical resources for this iteration (ping-pong swaps on odd iterations).
+    auto swapped = [&](const std::string& n) -> std::string {
+        if (iter % 2 == 0) return n;
+        for (size_t k = 0; k + 1 < pd.swap.size(); k += 2) {
+            if (pd.swap[k] == n) return pd.swap[k + 1];
+            if (pd.swap[k + 1] == n) return pd.swap[k];
+        }
+        return n;
+    };
+    auto image = [&](const std::string& n) -> GraphImage& { return res_.images.at(swapped(n)); };
+    auto phys_image = [&](const std::string& n, bool prev) {
+        int p = prev ? 1 - frame_parity_ : frame_parity_;
+        return image(n).phys[static_cast<size_t>(p)].get();
+    };
+    auto phys_buffer = [&](const std::string& n, bool prev) {
+        int p = prev ? 1 - frame_parity_ : frame_parity_;
+        return res_.buffers.at(n).phys[static_cast<size_t>(p)].get();
+    };
+
+    // 1. Uses of this iteration, merged per physical resource.
+    struct ImageUse {
+        Usage usage;
+        bool discard = true;
+    };
+    std::map<PhysImage*, ImageUse> img_uses;
+    std::map<PhysBuffer*, Usage> buf_uses;
+    auto use_image = [&](PhysImage* p, Access a, VkPipelineStageFlags2 stages, bool discard) {
+        Usage u = usage_of(a, stages);
+        auto [it, fresh] = img_uses.try_emplace(p, ImageUse{u, discard});
+        if (!fresh) {
+            it->second.usage = merge(it->second.usage, u);
+            it->second.discard = it->second.discard && discard;
+        }
+    };
+    auto use_buffer = [&](PhysBuffer* p, Access a, VkPipelineStageFlags2 stages) {
+        Usage u = usage_of(a, stages);
+        auto [it, fresh] = buf_uses.try_emplace(p, u);
+        if (!fresh) it->second = merge(it->second, u);
+    };
+
+    for (const auto& b : cp.bindings) {
+        VkPipelineStageFlags2 st = pipeline_stages(b.binding.stages);
+        switch (b.kind) {
+        case BoundResource::Kind::image:
+        case BoundResource::Kind::image_prev:
+            use_image(phys_image(b.resource, b.kind == BoundResource::Kind::image_prev), b.access, st, false);
+            break;
+        case BoundResource::Kind::buffer:
+        case BoundResource::Kind::buffer_prev:
+            use_buffer(phys_buffer(b.resource, b.kind == BoundResource::Kind::buffer_prev), b.access, st);
+            break;
+        default: break;  // frame/params blocks are written by the host before submission
+        }
+    }
+    for (const auto& t : pd.targets) {
+        use_image(phys_image(t.image, false), Access::color_attachment, 0, pd.clear.color.has_value());
+        if (!t.resolve.empty()) use_image(phys_image(t.resolve, false), Access::resolve_dst, 0, true);
+    }
+    if (pd.depth) {
+        const GraphImage& gi = image(pd.depth->target.image);
+        bool full_clear = pd.clear.depth && (!gi.format->has_stencil || pd.clear.stencil);
+        use_image(phys_image(pd.depth->target.image, false),
+                  pd.depth->write || pd.stencil.enable ? Access::depth_attachment : Access::depth_read, 0, full_clear);
+    }
+    bool src_is_buffer = !pd.src.empty() && res_.buffers.count(pd.src);
+    switch (pd.kind) {
+    case graph::PassKind::blit:
+    case graph::PassKind::copy:
+        if (src_is_buffer) {
+            use_buffer(phys_buffer(pd.src, false), Access::transfer_src, 0);
+            use_buffer(phys_buffer(pd.dst, false), Access::transfer_dst, 0);
+        } else {
+            use_image(phys_image(pd.src, false), Access::transfer_src, 0, false);
+            use_image(phys_image(pd.dst, false), Access::transfer_dst, 0, true);
+        }
+        break;
+    case graph::PassKind::clear:
+        if (res_.buffers.count(pd.image)) use_buffer(phys_buffer(pd.image, false), Access::transfer_dst, 0);
+        else use_image(phys_image(pd.image, false), Access::transfer_dst, 0, true);
+        break;
+    default: break;
+    }
+    if (!pd.indirect.empty()) use_buffer(phys_buffer(pd.indirect, false), Access::indirect_read, 0);
+
+    BarrierBatch batch;
+    for (auto& [p, u] : img_uses) require(batch, *p, u.usage, u.discard);
+    for (auto& [p, u] : buf_uses) require(batch, *p, u);
+    batch.flush(cb);
+
+    // 2. Transfer kinds.
+    if (pd.kind == graph::PassKind::mips) {
+        PhysImage* p = phys_image(pd.image, false);
+        VkFormatProperties fp;
+        vkGetPhysicalDeviceFormatProperties(ctx_.physical(), p->image.info().format, &fp);
+        if (!(fp.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
+            return pass_error(pd, "image '" + pd.image + "' has a format that cannot be filtered linearly for mips");
+        record_mip_chain(cb, *p, usage_of(Access::sampled, VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT |
+                                                               VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT));
+        return ok_status();
+    }
+    if (pd.kind == graph::PassKind::clear) {
+        if (res_.buffers.count(pd.image)) {
+            uint32_t v = pd.clear.color ? static_cast<uint32_t>((*pd.clear.color)[0]) : 0u;
+            vkCmdFillBuffer(cb, phys_buffer(pd.image, false)->buffer.buffer, 0, VK_WHOLE_SIZE, v);
+            return ok_status();
+        }
+        PhysImage* p = phys_image(pd.image, false);
+        auto range = p->image.full_range();
+        if (p->image.aspect() & VK_IMAGE_ASPECT_DEPTH_BIT) {
+            VkClearDepthStencilValue v{pd.clear.depth.value_or(1.0f), pd.clear.stencil.value_or(0)};
+            vkCmdClearDepthStencilImage(cb, p->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1, &range);
+        } else {
+            VkClearColorValue v{};
+            if (pd.clear.color) std::memcpy(v.float32, pd.clear.color->data(), sizeof v.float32);
+            vkCmdClearColorImage(cb, p->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1, &range);
+        }
+        return ok_status();
+    }
+    if (pd.kind == graph::PassKind::blit || pd.kind == graph::PassKind::copy) {
+        if (src_is_buffer) {
+            PhysBuffer* s = phys_buffer(pd.src, false);
+            PhysBuffer* d = phys_buffer(pd.dst, false);
+            VkBufferCopy c{0, 0, std::min(s->buffer.size, d->buffer.size)};
+            vkCmdCopyBuffer(cb, s->buffer.buffer, d->buffer.buffer, 1, &c);
+            return ok_status();
+        }
+        PhysImage* s = phys_image(pd.src, false);
+        PhysImage* d = phys_image(pd.dst, false);
+        const auto& si = s->image.info();
+        const auto& di = d->image.info();
+        uint32_t layers = std::min(si.layers, di.layers);
+        if (si.samples != VK_SAMPLE_COUNT_1_BIT) {
+            // A multisampled source is resolved, which is what blitting it means.
+            VkImageResolve r{.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, layers},
+                             .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, layers},
+                             .extent = {std::min(si.extent.width, di.extent.width),
+                                        std::min(si.extent.height, di.extent.height), 1}};
+            vkCmdResolveImage(cb, s->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d->image.handle(),
+                              VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &r);
+        } else if (pd.kind == graph::PassKind::copy) {
+            VkImageCopy c{.srcSubresource = {s->image.aspect(), 0, 0, layers},
+                          .dstSubresource = {d->image.aspect(), 0, 0, layers},
+                          .extent = {std::min(si.extent.width, di.extent.width),
+                                     std::min(si.extent.height, di.extent.height),
+                                     std::min(si.extent.depth, di.extent.depth)}};
+            vkCmdCopyImage(cb, s->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d->image.handle(),
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &c);
+        } else {
+            auto off = [](const VkExtent3D& e) {
+                return VkOffset3D{static_cast<int32_t>(e.width), static_cast<int32_t>(e.height),
+                                  static_cast<int32_t>(e.depth)};
+            };
+            VkImageBlit b{.srcSubresource = {s->image.aspect(), 0, 0, layers},
+                          .srcOffsets = {{0, 0, 0}, off(si.extent)},
+                          .dstSubresource = {d->image.aspect(), 0, 0, layers},
+                          .dstOffsets = {{0, 0, 0}, off(di.extent)}};
+            vkCmdBlitImage(cb, s->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d->image.handle(),
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &b,
+                           pd.filter == "nearest" ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
+        }
+        return ok_status();
+    }
+
+    // 3. Descriptors, written by name for this iteration.
+    std::vector<VkDescriptorSet> sets(pp.set_layouts.size(), VK_NULL_HANDLE);
+    for (size_t s = 0; s < sets.size(); ++s) {
+        VkDescriptorSetLayout l = pp.set_layouts[s];
+        VkDescriptorSetAllocateInfo ai{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO,
+                                       .descriptorPool = pool_,
+                                       .descriptorSetCount = 1,
+                                       .pSetLayouts = &l};
+        VK_CHECK(vkAllocateDescriptorSets(ctx_.device(), &ai, &sets[s]));
+    }
+    std::vector<VkDescriptorImageInfo> image_infos;
+    std::vector<VkDescriptorBufferInfo> buffer_infos;
+    image_infos.reserve(cp.bindings.size());
+    buffer_infos.reserve(cp.bindings.size());
+    std::vector<VkWriteDescriptorSet> writes;
+    for (const auto& b : cp.bindings) {
+        VkWriteDescriptorSet w{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                               .dstSet = sets[b.binding.set],
+                               .dstBinding = b.binding.binding,
+                               .descriptorCount = 1,
+                               .descriptorType = descriptor_type(b.binding.type)};
+        switch (b.kind) {
+        case BoundResource::Kind::frame:
+            buffer_infos.push_back({frame_ubo_.buffer, 0, VK_WHOLE_SIZE});
+            w.pBufferInfo = &buffer_infos.back();
+            break;
+        case BoundResource::Kind::params:
+            buffer_infos.push_back({params_ubo_.buffer, 0, VK_WHOLE_SIZE});
+            w.pBufferInfo = &buffer_infos.back();
+            break;
+        case BoundResource::Kind::buffer:
+        case BoundResource::Kind::buffer_prev:
+            buffer_infos.push_back({phys_buffer(b.resource, b.kind == BoundResource::Kind::buffer_prev)->buffer.buffer,
+                                    0, VK_WHOLE_SIZE});
+            w.pBufferInfo = &buffer_infos.back();
+            break;
+        case BoundResource::Kind::image:
+        case BoundResource::Kind::image_prev: {
+            GraphImage& gi = image(b.resource);
+            PhysImage* p = phys_image(b.resource, b.kind == BoundResource::Kind::image_prev);
+            bool storage = b.binding.type == shader::BindingType::storage_image;
+            image_infos.push_back({storage ? VK_NULL_HANDLE : gi.sampler.get(),
+                                   storage ? p->storage_view : p->image.view(), p->state.layout});
+            w.pImageInfo = &image_infos.back();
+            break;
+        }
+        }
+        if (b.binding.count > 1) {
+            return pass_error(pd, "arrays of resources ('" + b.binding.name + "[" +
+                                      std::to_string(b.binding.count) + "]') are not supported yet");
+        }
+        writes.push_back(w);
+    }
+    if (!writes.empty())
+        vkUpdateDescriptorSets(ctx_.device(), static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+
+    vkCmdBindPipeline(cb, pp.bind_point, pp.pipeline);
+    if (!sets.empty())
+        vkCmdBindDescriptorSets(cb, pp.bind_point, pp.layout, 0, static_cast<uint32_t>(sets.size()), sets.data(), 0,
+                                nullptr);
+    int layer_of_iteration = iter;
+    if (pp.push_stages) {
+        PushBlock push{iter, cp.repeat, layer_of_iteration, 0};
+        vkCmdPushConstants(cb, pp.layout, pp.push_stages, 0,
+                           std::min<uint32_t>(sizeof push, cp.program.reflection.push_constant_size), &push);
+    }
+
+    // 4. Compute.
+    if (pd.kind == graph::PassKind::compute) {
+        if (!pd.indirect.empty()) {
+            vkCmdDispatchIndirect(cb, phys_buffer(pd.indirect, false)->buffer.buffer, pd.indirect_offset);
+            return ok_status();
+        }
+        graph::SizeEnv env = size_env(g.desc, g.view);
+        bool by_threads = !pd.threads.empty();
+        auto v = graph::eval_size(by_threads ? pd.threads : pd.groups, env);
+        if (!v) {
+            Error e = v.error();
+            e.pass = pd.name;
+            return e;
+        }
+        uint32_t n[3] = {1, 1, 1};
+        std::vector<int64_t> vals = *v;
+        if (vals.size() == 1 && by_threads) vals = {vals[0], 1, 1};
+        for (size_t k = 0; k < 3 && k < vals.size(); ++k) {
+            int64_t x = vals[k];
+            if (by_threads) x = (x + cp.program.reflection.local_size[k] - 1) / cp.program.reflection.local_size[k];
+            if (x < 1 || x > 65535)
+                return pass_error(pd, "dispatch size " + std::to_string(x) + " in dimension " + std::to_string(k) +
+                                          " is outside 1..65535");
+            n[k] = static_cast<uint32_t>(x);
+        }
+        vkCmdDispatch(cb, n[0], n[1], n[2]);
+        return ok_status();
+    }
+
+    // 5. Raster: dynamic rendering into the pass's targets.
+    std::vector<VkRenderingAttachmentInfo> colors;
+    VkExtent2D area{0, 0};
+    uint32_t layer_count = 1;
+    auto attachment_layer = [&](const graph::AttachmentRef& a) { return a.layer == -2 ? iter : a.layer; };
+    for (size_t k = 0; k < pd.targets.size(); ++k) {
+        const auto& t = pd.targets[k];
+        PhysImage* p = phys_image(t.image, false);
+        int layer = attachment_layer(t);
+        if (layer >= 0 && static_cast<uint32_t>(layer) >= std::max(p->image.info().layers, p->image.info().extent.depth))
+            return pass_error(pd, "target '" + t.image + "' has no layer " + std::to_string(layer));
+        VkRenderingAttachmentInfo a{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                    .imageView = p->image.attachment_view(static_cast<uint32_t>(t.mip), layer),
+                                    .imageLayout = p->state.layout,
+                                    .loadOp = pd.clear.color ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD,
+                                    .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+        if (pd.clear.color) {
+            const GraphImage& gi = image(t.image);
+            if (gi.format->is_integer) {
+                for (int c = 0; c < 4; ++c) a.clearValue.color.uint32[c] = static_cast<uint32_t>((*pd.clear.color)[static_cast<size_t>(c)]);
+            } else {
+                std::memcpy(a.clearValue.color.float32, pd.clear.color->data(), 16);
+            }
+        }
+        if (!t.resolve.empty()) {
+            PhysImage* r = phys_image(t.resolve, false);
+            a.resolveMode = image(t.image).format->is_integer ? VK_RESOLVE_MODE_SAMPLE_ZERO_BIT : VK_RESOLVE_MODE_AVERAGE_BIT;
+            a.resolveImageView = r->image.attachment_view(0, layer);
+            a.resolveImageLayout = r->state.layout;
+        }
+        colors.push_back(a);
+        if (k == 0) {
+            area = mip_extent(p->image.info(), static_cast<uint32_t>(t.mip));
+            if (layer == -1) layer_count = p->image.info().layers;
+        }
+    }
+    VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    VkRenderingAttachmentInfo stencil{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    bool has_stencil = false;
+    if (pd.depth) {
+        PhysImage* p = phys_image(pd.depth->target.image, false);
+        int layer = attachment_layer(pd.depth->target);
+        depth.imageView = p->image.attachment_view(static_cast<uint32_t>(pd.depth->target.mip), layer);
+        depth.imageLayout = p->state.layout;
+        depth.loadOp = pd.clear.depth ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+        depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        depth.clearValue.depthStencil = {pd.clear.depth.value_or(1.0f), pd.clear.stencil.value_or(0)};
+        has_stencil = image(pd.depth->target.image).format->has_stencil;
+        if (has_stencil) {
+            stencil = depth;
+            stencil.loadOp = pd.clear.stencil ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+        }
+        if (colors.empty()) {
+            area = mip_extent(p->image.info(), static_cast<uint32_t>(pd.depth->target.mip));
+            if (layer == -1) layer_count = p->image.info().layers;
+        }
+    }
+    if (area.width == 0) return pass_error(pd, "the pass has no targets and no depth attachment to render into");
+    VkRenderingInfo ri{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                       .renderArea = {{0, 0}, area},
+                       .layerCount = layer_count,
+                       .colorAttachmentCount = static_cast<uint32_t>(colors.size()),
+                       .pColorAttachments = colors.data(),
+                       .pDepthAttachment = pd.depth ? &depth : nullptr,
+                       .pStencilAttachment = has_stencil ? &stencil : nullptr};
+    vkCmdBeginRendering(cb, &ri);
+    VkViewport vp{0.0f, 0.0f, static_cast<float>(area.width), static_cast<float>(area.height), 0.0f, 1.0f};
+    VkRect2D sc{{0, 0}, area};
+    vkCmdSetViewport(cb, 0, 1, &vp);
+    vkCmdSetScissor(cb, 0, 1, &sc);
+    if (pd.kind == graph::PassKind::fullscreen) {
+        vkCmdDraw(cb, 3, 1, 0, 0);
+    } else {
+        const GpuMesh* mesh = pd.mesh.empty() ? nullptr : &res_.meshes.at(pd.mesh);
+        uint32_t instances = pd.instances ? static_cast<uint32_t>(*pd.instances) : mesh ? mesh->instances : 1u;
+        if (mesh) {
+            VkDeviceSize zero = 0;
+            VkBuffer vb = mesh->vertices.buffer;
+            vkCmdBindVertexBuffers(cb, 0, 1, &vb, &zero);
+            vkCmdBindIndexBuffer(cb, mesh->indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+        }
+        if (!pd.indirect.empty()) {
+            VkBuffer ib = phys_buffer(pd.indirect, false)->buffer.buffer;
+            if (mesh) vkCmdDrawIndexedIndirect(cb, ib, pd.indirect_offset, 1, sizeof(VkDrawIndexedIndirectCommand));
+            else vkCmdDrawIndirect(cb, ib, pd.indirect_offset, 1, sizeof(VkDrawIndirectCommand));
+        } else if (mesh) {
+            vkCmdDrawIndexed(cb, mesh->index_count, instances, 0, 0, 0);
+        } else {
+            vkCmdDraw(cb, static_cast<uint32_t>(std::max(0, pd.vertex_count)), instances, 0, 0);
+        }
+    }
+    vkCmdEndRendering(cb);
+    return ok_status();
+}
+
+Result<image::Image> Executor::read(const std::string& name, int mip, int layer) {
+    auto it = res_.images.find(name);
+    if (it == res_.images.end()) {
+        std::vector<std::string> names;
+        for (const auto& [n, gi] : res_.images) names.push_back(n);
+        Error e = make_error("no image named '" + name + "' in the graph");
+        e.resource = name;
+        std::string near = nearest_name(name, names);
+        if (!near.empty()) e.hint = "did you mean '" + near + "'?";
+        std::string all;
+        for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+        e.notes.push_back("images: " + all);
+        return e;
+    }
+    GraphImage& gi = it->second;
+    int parity = frames_rendered_ > 0 ? (frames_rendered_ - 1) & 1 : 0;
+    PhysImage* p = gi.phys[static_cast<size_t>(parity)].get();
+    const auto& info = p->image.info();
+    if (info.samples != VK_SAMPLE_COUNT_1_BIT) {
+        Error e = make_error("image '" + name + "' is multisampled and cannot be read back; read its resolve target");
+        e.resource = name;
+        return e;
+    }
+    bool is3d = info.type == VK_IMAGE_TYPE_3D;
+    uint32_t nlayers = is3d ? std::max(1u, info.extent.depth >> mip) : info.layers;
+    if (mip < 0 || static_cast<uint32_t>(mip) >= info.mips || layer < 0 || static_cast<uint32_t>(layer) >= nlayers) {
+        Error e = make_error("image '" + name + "' has " + std::to_string(info.mips) + " mip(s) and " +
+                             std::to_string(nlayers) + " layer(s); mip " + std::to_string(mip) + " layer " +
+                             std::to_string(layer) + " does not exist");
+        e.resource = name;
+        return e;
+    }
+    VkExtent2D ext = mip_extent(info, static_cast<uint32_t>(mip));
+    uint32_t texel = copy_texel_size(*gi.format);
+    VkDeviceSize bytes = static_cast<VkDeviceSize>(ext.width) * ext.height * texel;
+    vk::Buffer staging = vk::create_buffer(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    bool depth = gi.format->is_depth;
+    Status st = ctx_.run_once(
+        [&](VkCommandBuffer cb) {
+            BarrierBatch batch;
+            require(batch, *p, usage_of(Access::transfer_src, 0));
+            batch.flush(cb);
+            VkBufferImageCopy c{
+                .imageSubresource = {depth ? static_cast<VkImageAspectFlags>(VK_IMAGE_ASPECT_DEPTH_BIT)
+                                           : static_cast<VkImageAspectFlags>(VK_IMAGE_ASPECT_COLOR_BIT),
+                                     static_cast<uint32_t>(mip), is3d ? 0u : static_cast<uint32_t>(layer), 1},
+                .imageOffset = {0, 0, is3d ? layer : 0},
+                .imageExtent = {ext.width, ext.height, 1}};
+            vkCmdCopyImageToBuffer(cb, p->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer, 1, &c);
+            // Make the copy visible to the host read below.
+            VkMemoryBarrier2 mb{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                                .srcStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                                .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                .dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT,
+                                .dstAccessMask = VK_ACCESS_2_HOST_READ_BIT};
+            VkDependencyInfo di{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1, .pMemoryBarriers = &mb};
+            vkCmdPipelineBarrier2(cb, &di);
+        },
+        timeout_);
+    if (!st) return st.error();
+    image::Image out;
+    out.width = static_cast<int>(ext.width);
+    out.height = static_cast<int>(ext.height);
+    out.pixels.resize(static_cast<size_t>(ext.width) * ext.height * 4);
+    const auto* src = static_cast<const uint8_t*>(staging.mapped);
+    for (size_t i = 0; i < static_cast<size_t>(ext.width) * ext.height; ++i)
+        if (!decode_texel(*gi.format, src + i * texel, &out.pixels[i * 4], depth)) {
+            Error e = make_error("image '" + name + "' has format " + gi.format->name + ", which cannot be read back");
+            e.resource = name;
+            return e;
+        }
+    return out;
+}
+
+} // namespace pl::exec

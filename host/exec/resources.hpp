@@ -1,0 +1,63 @@
+// The GPU side of a graph's [images], [buffers] and [meshes]: created once from the description
+// (sizes evaluated, formats checked against the device), uploaded from files and generators, and
+// each with the ResourceState the planner's transition() tracks across passes and frames.
+#pragma once
+
+#include "exec/build.hpp"
+#include "exec/plan.hpp"
+#include "vk/formats.hpp"
+#include "vk/resources.hpp"
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace pl::exec {
+
+struct PhysImage {
+    vk::Image image;
+    ResourceState state;
+    VkImageView storage_view = VK_NULL_HANDLE;  // mip 0, all layers, for imageLoad/Store
+    vk::UniqueImageView storage_view_owner;
+};
+
+struct GraphImage {
+    const graph::ImageDesc* desc = nullptr;
+    const vk::FormatInfo* format = nullptr;
+    VkExtent3D extent{1, 1, 1};
+    uint32_t mips = 1, layers = 1;
+    // History images own two physical images, swapped every frame; aliases point at another's.
+    std::array<std::shared_ptr<PhysImage>, 2> phys;
+    vk::UniqueSampler sampler;
+    bool history = false;
+};
+
+struct PhysBuffer {
+    vk::Buffer buffer;
+    ResourceState state;
+};
+
+struct GraphBuffer {
+    const graph::BufferDesc* desc = nullptr;
+    std::array<std::shared_ptr<PhysBuffer>, 2> phys;
+    bool history = false;
+};
+
+struct GpuMesh {
+    vk::Buffer vertices, indices;
+    uint32_t index_count = 0;
+    uint32_t instances = 1;
+};
+
+struct GraphResources {
+    std::map<std::string, GraphImage> images;
+    std::map<std::string, GraphBuffer> buffers;
+    std::map<std::string, GpuMesh> meshes;
+};
+
+// Creates and uploads everything. Errors (unsupported format usage on this device, unreadable
+// image file, bad mesh) name the resource and its line in preset.toml.
+Result<GraphResources> create_resources(vk::Context& ctx, const CompiledGraph& g);
+
+} // namespace pl::exec

@@ -1,0 +1,30 @@
+#include "vk/check.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace pl::vk {
+
+const char* result_name(VkResult r) {
+    switch (r) {
+#define PL_CASE(x) case x: return #x;
+        PL_CASE(VK_SUCCESS) PL_CASE(VK_NOT_READY) PL_CASE(VK_TIMEOUT) PL_CASE(VK_INCOMPLETE)
+        PL_CASE(VK_ERROR_OUT_OF_HOST_MEMORY) PL_CASE(VK_ERROR_OUT_OF_DEVICE_MEMORY)
+        PL_CASE(VK_ERROR_INITIALIZATION_FAILED) PL_CASE(VK_ERROR_DEVICE_LOST)
+        PL_CASE(VK_ERROR_MEMORY_MAP_FAILED) PL_CASE(VK_ERROR_LAYER_NOT_PRESENT)
+        PL_CASE(VK_ERROR_EXTENSION_NOT_PRESENT) PL_CASE(VK_ERROR_FEATURE_NOT_PRESENT)
+        PL_CASE(VK_ERROR_INCOMPATIBLE_DRIVER) PL_CASE(VK_ERROR_TOO_MANY_OBJECTS)
+        PL_CASE(VK_ERROR_FORMAT_NOT_SUPPORTED) PL_CASE(VK_ERROR_OUT_OF_DATE_KHR)
+        PL_CASE(VK_SUBOPTIMAL_KHR) PL_CASE(VK_ERROR_SURFACE_LOST_KHR)
+#undef PL_CASE
+    default: return "VK_RESULT_UNKNOWN";
+    }
+}
+
+void fail(const char* call, VkResult r, const char* file, int line) {
+    std::fprintf(stderr, "passlab: internal Vulkan failure: %s returned %s (%d) at %s:%d\n", call,
+                 result_name(r), static_cast<int>(r), file, line);
+    std::abort();
+}
+
+} // namespace pl::vk

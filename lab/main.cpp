@@ -1,0 +1,66 @@
+// passlab: command-line entry. Parses arguments with CLI11 and calls one verb; all work lives in
+// the verbs and the host library.
+#include "verbs.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdlib>
+
+int main(int argc, char** argv) {
+    using namespace pl::lab;
+    CLI::App app{"passlab: a shader lab for real-time rendering (Vulkan)"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "passlab 0.1.0");
+
+    CommonOptions common;
+    if (const char* v = std::getenv("PASSLAB_VALIDATION")) common.validation = std::string(v) == "1";
+    auto add_common = [&](CLI::App* sub) {
+        sub->add_option("--device", common.device, "Vulkan device: index or name substring (default: PASSLAB_DEVICE, else the best GPU, else lavapipe)");
+        sub->add_flag("--validation", common.validation, "Enable the Khronos validation layer");
+        sub->add_flag("--no-cache", common.no_cache, "Do not read or write the SPIR-V cache");
+        sub->add_option("--timeout", common.timeout_s, "Seconds a frame may take before it is cut off")->check(CLI::PositiveNumber);
+    };
+
+    RenderOptions ro;
+    auto* render_cmd = app.add_subcommand("render", "Render a preset headlessly to image files");
+    render_cmd->add_option("preset", ro.preset, "Preset folder, preset.toml, or name")->required();
+    render_cmd->add_option("-o,--out", ro.out_dir, "Output folder")->required();
+    render_cmd->add_option("--size", ro.size, "Size WxH (default: [view].size)");
+    render_cmd->add_option("--time", ro.time, "Time of the last frame, seconds");
+    render_cmd->add_option("--frames", ro.frames, "Number of frames to render")->check(CLI::Range(1, 100000));
+    render_cmd->add_option("--step", ro.step, "Seconds between frames")->check(CLI::NonNegativeNumber);
+    render_cmd->add_option("--set", ro.set, "Param override name=value (repeatable)");
+    render_cmd->add_option("--pass", ro.passes, "Also write this image (repeatable)");
+    render_cmd->add_option("--format", ro.format, "Force png or exr")->check(CLI::IsMember({"png", "exr"}));
+    add_common(render_cmd);
+
+    std::string preset;
+    std::vector<std::string> set;
+    auto* check_cmd = app.add_subcommand("check", "Parse, compile, reflect and validate a preset; no rendering");
+    check_cmd->add_option("preset", preset, "Preset folder, preset.toml, or name")->required();
+    check_cmd->add_option("--set", set, "Param override name=value (repeatable)");
+    add_common(check_cmd);
+
+    bool verbose = false;
+    auto* list_cmd = app.add_subcommand("list", "List the presets with family and summary");
+    list_cmd->add_flag("-v,--verbose", verbose, "Also print each preset's folder");
+
+    bool dot = false;
+    auto* graph_cmd = app.add_subcommand("graph", "Print a preset's pass graph");
+    graph_cmd->add_option("preset", preset, "Preset folder, preset.toml, or name")->required();
+    graph_cmd->add_flag("--dot", dot, "Graphviz dot output (the only format so far)");
+    add_common(graph_cmd);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        int rc = app.exit(e);
+        return rc == 0 ? 0 : 2;  // usage errors exit 2 (docs/cli.md)
+    }
+
+    if (render_cmd->parsed()) return render(ro, common);
+    if (check_cmd->parsed()) return check(preset, set, common);
+    if (list_cmd->parsed()) return list(verbose);
+    if (graph_cmd->parsed()) return graph_dot(preset, common);
+    return 2;
+}

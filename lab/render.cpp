@@ -1,0 +1,114 @@
+// `passlab render`: headless, deterministic. Frames are rendered with a fixed step; the last one
+// is at --time. The output image (and every --pass image) is written as PNG for 8-bit formats
+// and EXR for float formats, named <preset>[.<image>].<ext> in the output folder.
+#include "verbs.hpp"
+
+#include "exec/build.hpp"
+#include "exec/executor.hpp"
+#include "image/image.hpp"
+#include "vk/context.hpp"
+#include "vk/formats.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+namespace fs = std::filesystem;
+
+namespace pl::lab {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+} // namespace
+
+int render(const RenderOptions& o, const CommonOptions& c) {
+    auto t0 = Clock::now();
+    auto size = parse_size(o.size);
+    if (!size) return report(size.error());
+    auto toml = exec::resolve_preset(o.preset);
+    if (!toml) return report(toml.error());
+
+    exec::BuildOptions bo;
+    bo.size = *size;
+    bo.set = o.set;
+    bo.cache_dir = cache_dir(c);
+    auto built = exec::build_graph(*toml, bo);
+    if (!built) return report(built.error());
+    double t_build = ms_since(t0);
+
+    // Validate every requested image name before touching the GPU.
+    std::vector<std::string> images = {built->desc.output};
+    for (const auto& p : o.passes) {
+        if (!built->desc.find_image(p)) {
+            std::vector<std::string> names;
+            for (const auto& i : built->desc.images) names.push_back(i.name);
+            Error e = make_error("--pass " + p + ": no image of that name in " + toml->string());
+            std::string near = nearest_name(p, names);
+            if (!near.empty()) e.hint = "did you mean '" + near + "'?";
+            e.code = ExitCode::usage;
+            return report(e);
+        }
+        images.push_back(p);
+    }
+
+    auto t1 = Clock::now();
+    vk::ContextOptions co;
+    co.validation = c.validation;
+    co.device = c.device;
+    auto ctx = vk::Context::create(co);
+    if (!ctx) return report(ctx.error());
+    double t_device = ms_since(t1);
+
+    auto t2 = Clock::now();
+    std::string preset_name = built->desc.dir.filename().string();
+    auto ex = exec::Executor::create(**ctx, std::move(built.value()));
+    if (!ex) return report(ex.error());
+    (*ex)->set_timeout(std::chrono::milliseconds(static_cast<long long>(c.timeout_s * 1000)));
+    double t_setup = ms_since(t2);
+
+    auto t3 = Clock::now();
+    for (int f = 0; f < o.frames; ++f) {
+        exec::FrameInput in;
+        in.index = f;
+        in.delta = o.step;
+        in.time = o.time - static_cast<double>(o.frames - 1 - f) * o.step;
+        if (auto s = (*ex)->render(in); !s) return report(s.error());
+    }
+    double t_frames = ms_since(t3);
+
+    auto t4 = Clock::now();
+    std::error_code ec;
+    fs::create_directories(o.out_dir, ec);
+    if (ec) {
+        Error e = make_error("cannot create output folder '" + o.out_dir + "': " + ec.message());
+        e.code = ExitCode::environment;
+        return report(e);
+    }
+    const auto& g = (*ex)->graph();
+    for (size_t k = 0; k < images.size(); ++k) {
+        const std::string& name = images[k];
+        auto img = (*ex)->read(name);
+        if (!img) return report(img.error());
+        const graph::ImageDesc* d = g.desc.find_image(name);
+        const vk::FormatInfo* fi = vk::find_format(d->format);
+        bool hdr = fi && (fi->bytes_per_texel / std::max(1, fi->components)) >= 2 && !fi->is_integer;
+        std::string ext = o.format.empty() ? (hdr ? "exr" : "png") : o.format;
+        fs::path file = fs::path(o.out_dir) / (preset_name + (k == 0 ? "" : "." + name) + "." + ext);
+        if (auto s = image::save_image(*img, file); !s) return report(s.error());
+        std::printf("%s\n", file.string().c_str());
+    }
+    double t_write = ms_since(t4);
+    std::fprintf(stderr, "render: %dx%d, %d frame(s); build %.1f ms, device %.1f ms, setup %.1f ms, frames %.1f ms, write %.1f ms, total %.1f ms\n",
+                 g.view[0], g.view[1], o.frames, t_build, t_device, t_setup, t_frames, t_write, ms_since(t0));
+    for (const auto& t : (*ex)->timings()) std::fprintf(stderr, "  pass %-20s %8.3f ms GPU\n", t.name.c_str(), t.gpu_ms);
+    if ((*ctx)->validation_message_count() > 0) {
+        std::fprintf(stderr, "render: %zu validation message(s)\n", (*ctx)->validation_message_count());
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace pl::lab

@@ -1,0 +1,42 @@
+// The `passlab` verbs. Each returns the process exit code (see docs/cli.md); main.cpp only
+// parses the command line and dispatches.
+#pragma once
+
+#include "util/error.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pl::lab {
+
+struct CommonOptions {
+    std::string device;        // --device
+    bool validation = false;   // --validation (also PASSLAB_VALIDATION=1)
+    bool no_cache = false;     // --no-cache
+    double timeout_s = 20.0;   // --timeout: GPU watchdog per frame
+};
+
+struct RenderOptions {
+    std::string preset;
+    std::string out_dir;
+    std::string size;  // "WxH"
+    double time = 0.0;
+    int frames = 1;
+    double step = 1.0 / 60.0;
+    std::vector<std::string> set;
+    std::vector<std::string> passes;  // extra images to write
+    std::string format;               // "", "png", "exr"
+};
+
+int render(const RenderOptions& o, const CommonOptions& c);
+int check(const std::string& preset, const std::vector<std::string>& set, const CommonOptions& c);
+int list(bool verbose);
+int graph_dot(const std::string& preset, const CommonOptions& c);
+
+// Shared helpers.
+int report(const Error& e);  // prints the error, returns its exit code
+std::string cache_dir(const CommonOptions& c);
+Result<std::optional<std::array<int, 2>>> parse_size(const std::string& s);
+
+} // namespace pl::lab
