@@ -34,6 +34,17 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--format", ro.format, "Force png or exr")->check(CLI::IsMember({"png", "exr"}));
     add_common(render_cmd);
 
+    TestOptions to;
+    auto* test_cmd = app.add_subcommand("test", "Run presets' [[test]] cases headlessly (goldens, probes, properties)");
+    test_cmd->add_option("presets", to.targets, "Presets or folders (default: presets/ and tests/graphs/)");
+    test_cmd->add_flag("--ci", to.ci, "Missing goldens fail (also when CI=true)");
+    test_cmd->add_flag("--update", to.update, "Rewrite goldens");
+    test_cmd->add_option("--case", to.update_case, "With --update: only this case");
+    test_cmd->add_flag("--no-validation", to.no_validation, "Do not enable the validation layer");
+    test_cmd->add_flag("-v,--verbose", to.verbose, "Print every check, not only failures");
+    test_cmd->add_option("--fail-dir", to.fail_dir, "Where actual/expected/diff images of failures go");
+    add_common(test_cmd);
+
     std::string preset;
     std::vector<std::string> set;
     auto* check_cmd = app.add_subcommand("check", "Parse, compile, reflect and validate a preset; no rendering");
@@ -59,6 +70,7 @@ int main(int argc, char** argv) {
     }
 
     if (render_cmd->parsed()) return render(ro, common);
+    if (test_cmd->parsed()) return test(to, common);
     if (check_cmd->parsed()) return check(preset, set, common);
     if (list_cmd->parsed()) return list(verbose);
     if (graph_cmd->parsed()) return graph_dot(preset, common);

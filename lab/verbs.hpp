@@ -29,7 +29,18 @@ struct RenderOptions {
     std::string format;               // "", "png", "exr"
 };
 
+struct TestOptions {
+    std::vector<std::string> targets;  // presets or folders; default presets/ and tests/graphs/
+    bool ci = false;                   // --ci (also CI=true): missing goldens fail
+    bool update = false;               // --update: rewrite goldens
+    std::string update_case;           // --case NAME: only this case when updating
+    bool no_validation = false;
+    bool verbose = false;
+    std::string fail_dir = "test-failures";
+};
+
 int render(const RenderOptions& o, const CommonOptions& c);
+int test(const TestOptions& o, const CommonOptions& c);
 int check(const std::string& preset, const std::vector<std::string>& set, const CommonOptions& c);
 int list(bool verbose);
 int graph_dot(const std::string& preset, const CommonOptions& c);

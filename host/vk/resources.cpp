@@ -41,8 +41,7 @@ VkImageAspectFlags aspect_of(VkFormat f) {
 Image::Image(Context& ctx, const ImageInfo& info) : device_(ctx.device()), info_(info) {
     aspect_ = aspect_of(info.format);
     VkImageCreateInfo ici{.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
-                          .flags = info.cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT
-                                             : static_cast<VkImageCreateFlags>(0),
+                          .flags = info.cube ? static_cast<VkImageCreateFlags>(VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT) : 0u,
                           .imageType = info.type,
                           .format = info.format,
                           .extent = info.extent,
@@ -72,7 +71,7 @@ Image::Image(Context& ctx, const ImageInfo& info) : device_(ctx.device()), info_
 
     // The sampled view shows depth only: a combined depth/stencil view is not sampleable.
     VkImageAspectFlags view_aspect =
-        (aspect_ & VK_IMAGE_ASPECT_DEPTH_BIT) ? VK_IMAGE_ASPECT_DEPTH_BIT : aspect_;
+        (aspect_ & VK_IMAGE_ASPECT_DEPTH_BIT) ? static_cast<VkImageAspectFlags>(VK_IMAGE_ASPECT_DEPTH_BIT) : aspect_;
     if (info.usage & (VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
                       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT)) {
         VkImageViewCreateInfo vci{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,

@@ -1,0 +1,46 @@
+// Test cases as data: a [[test]] of preset.toml is rendered headlessly with a fixed clock and its
+// checks (golden, probes, properties) are evaluated on the read-back images. Used by
+// `passlab test`; every check is generic, nothing is per preset.
+#pragma once
+
+#include "exec/build.hpp"
+#include "exec/executor.hpp"
+#include "graph/desc.hpp"
+#include "vk/context.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace pl::check {
+
+struct CheckResult {
+    std::string what;   // "probe uv=(0.5,0.5)", "golden snapshots/x.png", ...
+    bool passed = false;
+    std::string detail; // measured values vs tolerance
+};
+
+struct CaseResult {
+    std::string preset, name;
+    bool passed = false;
+    bool skipped = false;
+    std::string skip_reason;
+    std::vector<CheckResult> checks;
+    std::vector<std::string> validation;  // validation-layer messages seen during the case
+    std::string error;                    // build/render error (formatted), if any
+    double ms = 0.0;
+};
+
+struct RunOptions {
+    bool ci = false;         // missing golden fails instead of being written
+    bool update = false;     // rewrite goldens
+    std::string update_only; // with update: only this case name
+    std::filesystem::path cache_dir;
+    std::filesystem::path fail_dir;  // where actual/expected/diff images of failures go
+};
+
+// Runs every [[test]] of one preset on `ctx`.
+std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const std::filesystem::path& preset_toml,
+                                         const RunOptions& opt);
+
+} // namespace pl::check
