@@ -102,6 +102,8 @@ Status bind_pass(const graph::GraphDesc& desc, CompiledPass& cp) {
         }
         bool is_buffer = b.type == BindingType::uniform_buffer || b.type == BindingType::storage_buffer;
         std::string name = b.name;
+        if (auto it = pd.bind.find(name); it != pd.bind.end()) name = it->second;
+        else if (auto bt = pd.bind.find(b.block_name); is_buffer && bt != pd.bind.end()) name = bt->second;
         if (is_buffer && !desc.find_buffer(name) && !b.block_name.empty() && desc.find_buffer(b.block_name))
             name = b.block_name;
 

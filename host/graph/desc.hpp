@@ -160,6 +160,10 @@ struct PassDesc {
     // (+ geometry, tess_control, tess_eval); compute: compute.
     ShaderRef vertex, fragment, geometry, tess_control, tess_eval, compute;
     std::map<std::string, std::string> defines;  // injected as #define NAME VALUE
+    // Renames shader resource names to graph resources for this pass, so one shader in passes/
+    // serves many graphs: bind = { blur_in = "hdr" } binds the shader's `blur_in` to image hdr.
+    std::map<std::string, std::string> bind;
+    SourceLoc bind_loc;
 
     // Raster state.
     std::vector<AttachmentRef> targets;  // colour targets in location order
