@@ -126,6 +126,10 @@ void record_upload(VkCommandBuffer cb, PhysImage& pi, VkBuffer staging) {
         require(batch, pi, read);
         batch.flush(cb);
     }
+    // The final barrier's second scope covers every later command, in this and in later
+    // submissions: frames need no further barrier to read the upload.
+    pi.state.write_stages = pi.state.read_stages = VK_PIPELINE_STAGE_2_NONE;
+    pi.state.write_access = VK_ACCESS_2_NONE;
 }
 
 Status upload_pixels(vk::Context& ctx, GraphImage& gi, const image::Image& img) {
