@@ -4,6 +4,7 @@
 
 #include "util/error.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>

@@ -1,0 +1,30 @@
+#include "graph/desc.hpp"
+
+namespace pl::graph {
+
+namespace {
+template <class V> auto* find_named(const V& v, const std::string& n) {
+    for (const auto& x : v)
+        if (x.name == n) return &x;
+    return static_cast<const typename V::value_type*>(nullptr);
+}
+} // namespace
+
+const ImageDesc* GraphDesc::find_image(const std::string& n) const { return find_named(images, n); }
+const BufferDesc* GraphDesc::find_buffer(const std::string& n) const { return find_named(buffers, n); }
+const MeshDesc* GraphDesc::find_mesh(const std::string& n) const { return find_named(meshes, n); }
+const ParamDesc* GraphDesc::find_param(const std::string& n) const { return find_named(params, n); }
+const PassDesc* GraphDesc::find_pass(const std::string& n) const { return find_named(passes, n); }
+
+int ParamDesc::components() const {
+    switch (type) {
+    case ParamType::vec2: return 2;
+    case ParamType::vec3:
+    case ParamType::color3: return 3;
+    case ParamType::vec4:
+    case ParamType::color4: return 4;
+    default: return 1;
+    }
+}
+
+} // namespace pl::graph
