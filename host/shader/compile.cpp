@@ -2,6 +2,7 @@
 // program, so auto-mapped bindings agree across stages; errors are parsed back into pl::Error
 // with the real file and line (from our #line directives) and a column found from the quoted
 // token; SPIR-V is reflected and guarded against absurd private memory.
+#include "shader/bindings.hpp"
 #include "shader/cache.hpp"
 #include "shader/include.hpp"
 #include "shader/program.hpp"
@@ -180,6 +181,7 @@ Result<Program> compile_program(const std::vector<StageInput>& stages, const Com
             glslang::GlslangToSpv(*program.getIntermediate(language(stages[i].stage)), out.words, &so);
             prog.stages.push_back(std::move(out));
         }
+        unify_bindings(prog.stages);
         if (!opt.cache_dir.empty()) cache_store(opt.cache_dir, key_text, prog.stages);
     }
 

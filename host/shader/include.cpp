@@ -40,12 +40,15 @@ struct Expander {
     std::set<fs::path> once;
     std::vector<std::pair<fs::path, int>> chain;  // file and #include line leading to the next
 
-    Status expand(const fs::path& file, const std::string& text, std::string& out, const std::string& shown) {
+    // `first_line` is the file line number of text's first line (the main file's body starts
+    // after its #version line).
+    Status expand(const fs::path& file, const std::string& text, std::string& out, const std::string& shown,
+                  int first_line = 1) {
         static const std::regex inc(R"(^\s*#\s*include\s*[<"]([^">]+)[">].*$)");
         static const std::regex once_re(R"(^\s*#\s*pragma\s+once\b.*$)");
         std::istringstream in(text);
         std::string line;
-        int n = 0;
+        int n = first_line - 1;
         while (std::getline(in, line)) {
             ++n;
             std::smatch m;
@@ -147,7 +150,8 @@ Result<Expanded> expand_source(const fs::path& file, const std::string& text, co
     ex.text += "#line " + std::to_string(version_line + 1) + " \"" + shown + "\"\n";
     Expander e{include_dirs, ex.files, {}, {}};
     // Lines before #version (comments) are dropped: they cannot hold code.
-    if (auto s = e.expand(file.empty() ? fs::current_path() / shown : file, body, ex.text, shown); !s) return s.error();
+    if (auto s = e.expand(file.empty() ? fs::current_path() / shown : file, body, ex.text, shown, version_line + 1); !s)
+        return s.error();
     return ex;
 }
 
