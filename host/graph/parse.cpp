@@ -5,7 +5,9 @@
 #include "graph/parse_parts.hpp"
 #include "graph/toml_reader.hpp"
 
+#include <algorithm>
 #include <fstream>
+#include <tuple>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -124,6 +126,15 @@ Result<GraphDesc> parse_graph_text(std::string_view text_in, const fs::path& as_
     if (auto s = array_of_tables("pass", [&](const toml::table& t) { return parse_pass(t, file, g); }); !s) return s.error();
     if (auto s = array_of_tables("test", [&](const toml::table& t) { return parse_test(t, file, g); }); !s) return s.error();
     if (auto s = top.finish(); !s) return s.error();
+    // toml++ iterates tables in key order; keep the order the user wrote (UI, std140 layout,
+    // listing), which is the order of the source positions.
+    auto by_position = [](const auto& a, const auto& b) {
+        return std::tie(a.loc.line, a.loc.col) < std::tie(b.loc.line, b.loc.col);
+    };
+    std::stable_sort(g.params.begin(), g.params.end(), by_position);
+    std::stable_sort(g.images.begin(), g.images.end(), by_position);
+    std::stable_sort(g.buffers.begin(), g.buffers.end(), by_position);
+    std::stable_sort(g.meshes.begin(), g.meshes.end(), by_position);
     return g;
 }
 
