@@ -205,6 +205,11 @@ Status bind_pass(const graph::GraphDesc& desc, CompiledPass& cp) {
         writes.push_back(underlying(desc, pd.image));
     }
     if (!pd.indirect.empty()) reads.push_back(pd.indirect);
+    // Ping-pong partners trade roles every iteration: the pass reads and writes both.
+    for (const auto& n : pd.swap) {
+        reads.push_back(underlying(desc, n));
+        writes.push_back(underlying(desc, n));
+    }
     if (!pd.mesh.empty()) {}  // meshes are immutable host data: no ordering constraint
 
     // Feedback loop: sampling an image while rendering into it is undefined behaviour.
