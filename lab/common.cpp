@@ -11,6 +11,12 @@ int report(const Error& e) {
     return static_cast<int>(e.code);
 }
 
+void exit_after_hang(int code) {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    std::_Exit(code);
+}
+
 std::string cache_dir(const CommonOptions& c) {
     if (c.no_cache) return {};
     if (const char* x = std::getenv("PASSLAB_CACHE_DIR")) return x;

@@ -75,7 +75,11 @@ int render(const RenderOptions& o, const CommonOptions& c) {
         in.index = f;
         in.delta = o.step;
         in.time = o.time - static_cast<double>(o.frames - 1 - f) * o.step;
-        if (auto s = (*ex)->render(in); !s) return report(s.error());
+        if (auto s = (*ex)->render(in); !s) {
+            int rc = report(s.error());
+            if ((*ctx)->hung()) exit_after_hang(rc);
+            return rc;
+        }
     }
     double t_frames = ms_since(t3);
 

@@ -81,6 +81,11 @@ int test(const TestOptions& o, const CommonOptions& c) {
                     std::printf("    %s %s: %s\n", ch.passed ? "ok  " : "FAIL", ch.what.c_str(), ch.detail.c_str());
             for (const auto& v : r.validation) std::printf("    validation: %s\n", v.c_str());
         }
+        if ((*ctx)->hung()) {
+            std::printf("stopping: the GPU is still running a shader that exceeded the time limit\n");
+            std::printf("%d passed, %d failed\n", passed, failed + 1);
+            exit_after_hang(1);
+        }
     }
     std::printf("%d passed, %d failed", passed, failed);
     if (skipped) std::printf(", %d skipped", skipped);

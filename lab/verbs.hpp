@@ -48,6 +48,9 @@ int graph_dot(const std::string& preset, const CommonOptions& c);
 
 // Shared helpers.
 int report(const Error& e);  // prints the error, returns its exit code
+// After a GPU watchdog timeout the driver may still be running the shader; waiting for it or
+// unloading the driver could hang, so the process ends here after reporting.
+[[noreturn]] void exit_after_hang(int code);
 std::string cache_dir(const CommonOptions& c);
 Result<std::optional<std::array<int, 2>>> parse_size(const std::string& s);
 

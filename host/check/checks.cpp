@@ -244,6 +244,7 @@ std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml,
     }
     const graph::GraphDesc& desc = probe_build->desc;
     for (const auto& t : desc.tests) {
+        if (ctx.hung()) break;  // a runaway shader still occupies the device
         auto t0 = std::chrono::steady_clock::now();
         CaseResult cr;
         cr.preset = preset;

@@ -37,6 +37,12 @@ scene::OrbitCamera to_camera(const graph::ViewDesc& v, const graph::OrbitCamera&
 } // namespace
 
 Executor::~Executor() {
+    if (ctx_.hung()) {
+        // Objects the running shader uses must outlive it: give them up instead of destroying.
+        new GraphResources(std::move(res_));
+        new std::vector<PassPipeline>(std::move(pipelines_));
+        return;
+    }
     if (ctx_.device()) vkDeviceWaitIdle(ctx_.device());
 }
 
@@ -155,7 +161,17 @@ Status Executor::render(const FrameInput& in) {
     VK_CHECK(vkQueueSubmit(ctx_.queue(), 1, &si, fence_));
     if (auto w = ctx_.wait(fence_, timeout_, "frame " + std::to_string(in.index)); !w) {
         (void)fence_.release();  // the GPU may still run the shader: never destroy what it uses
-        return w;
+        Error e = w.error();
+        std::error_code ec;
+        e.loc = {std::filesystem::proximate(g.desc.file, ec).string(), 0, 0};
+        std::string passes;
+        for (size_t i : g.order) {
+            const auto& pd = *g.passes[i].desc;
+            std::string shader = !pd.fragment.empty() ? pd.fragment.file : pd.compute.file;
+            passes += (passes.empty() ? "" : ", ") + pd.name + (shader.empty() ? "" : " (" + shader + ")");
+        }
+        e.notes.push_back("passes in the frame: " + passes);
+        return e;
     }
     VkFence f = fence_;
     VK_CHECK(vkResetFences(ctx_.device(), 1, &f));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstring>
 #include <sstream>
 
@@ -151,8 +152,13 @@ Status apply_param_value(std::vector<ParamDesc>& params, const std::string& name
         double v = nums[static_cast<size_t>(c)];
         if (p.type == ParamType::i32 && v != static_cast<double>(static_cast<long long>(v)))
             return bad("expects an integer");
-        if (p.min && v < *p.min) return bad("value " + std::to_string(v) + " is below min " + std::to_string(*p.min));
-        if (p.max && v > *p.max) return bad("value " + std::to_string(v) + " is above max " + std::to_string(*p.max));
+        auto num = [](double x) {
+            char b[32];
+            std::snprintf(b, sizeof b, "%g", x);
+            return std::string(b);
+        };
+        if (p.min && v < *p.min) return bad("value " + num(v) + " is below its min " + num(*p.min));
+        if (p.max && v > *p.max) return bad("value " + num(v) + " is above its max " + num(*p.max));
         p.value[static_cast<size_t>(c)] = v;
     }
     return ok_status();

@@ -99,6 +99,28 @@ Error parse_log(const std::string& log, Stage stage, const std::map<std::string,
     return first;
 }
 
+// The line declaring the array with the most elements (`name[12345]`) among `files`.
+SourceLoc largest_array_declaration(const std::vector<fs::path>& files) {
+    static const std::regex decl(R"(\b[A-Za-z_]\w*\s*\[\s*(\d+)\s*\])");
+    SourceLoc best;
+    unsigned long long most = 0;
+    for (const auto& f : files) {
+        auto text = read_text(f);
+        if (!text) continue;
+        std::istringstream in(*text);
+        std::string line;
+        for (int n = 1; std::getline(in, line); ++n)
+            for (std::sregex_iterator it(line.begin(), line.end(), decl), end; it != end; ++it) {
+                unsigned long long count = std::stoull((*it)[1].str().substr(0, 18));
+                if (count > most) {
+                    most = count;
+                    best = {display_path(f), n, static_cast<int>(it->position(0)) + 1};
+                }
+            }
+    }
+    return best;
+}
+
 std::string defines_text(const std::map<std::string, std::string>& defines) {
     std::string s;
     for (const auto& [k, v] : defines) s += "#define " + k + " " + v + "\n";
@@ -193,6 +215,11 @@ Result<Program> compile_program(const std::vector<StageInput>& stages, const Com
                                      "invocation (limit " + std::to_string(opt.max_private_bytes) +
                                      "): refused, it would exhaust memory",
                                  {shown_names[i], 0, 0});
+            // SPIR-V without debug info has no lines: point at the largest array declaration.
+            if (SourceLoc at = largest_array_declaration(prog.dependencies); at.known()) {
+                e.loc = at;
+                e.source_line = read_source_line(at.file, at.line);
+            }
             e.hint = "large arrays belong in a storage buffer ([buffers]), not in a local variable";
             return e;
         }

@@ -65,7 +65,8 @@ struct Expander {
             int col = static_cast<int>(line.find('#')) + 1;
             fs::path found;
             std::vector<fs::path> tried = {file.parent_path() / name};
-            for (const auto& d : dirs) tried.push_back(d / name);
+            for (const auto& d : dirs)
+                if (fs::weakly_canonical(d) != fs::weakly_canonical(file.parent_path())) tried.push_back(d / name);
             std::error_code ec;
             for (const auto& t : tried)
                 if (fs::is_regular_file(t, ec)) {

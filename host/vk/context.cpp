@@ -353,6 +353,7 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& opt) {
 }
 
 Context::~Context() {
+    if (hung_) return;  // a runaway shader may still execute: leak rather than hang or crash
     if (device_) {
         vkDeviceWaitIdle(device_);
         collect(UINT64_MAX);
@@ -388,6 +389,7 @@ Status Context::wait(VkFence fence, std::chrono::milliseconds timeout, const std
     uint64_t ns = static_cast<uint64_t>(timeout.count()) * 1000000ull;
     VkResult r = vkWaitForFences(device_, 1, &fence, VK_TRUE, ns);
     if (r == VK_TIMEOUT) {
+        hung_ = true;
         Error e = make_error(what + " did not finish within " +
                              std::to_string(timeout.count() / 1000.0).substr(0, 5) +
                              " s: a shader probably runs away (endless or very long loop)");

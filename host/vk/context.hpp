@@ -62,6 +62,9 @@ class Context {
     std::string driver_name() const { return driver_name_; }
     std::string driver_info() const { return driver_info_; }
     bool validation_enabled() const { return validation_; }
+    // True after a watchdog timeout: the GPU may still be running the shader, so nothing may be
+    // waited for or destroyed; callers end the process (std::_Exit) after reporting.
+    bool hung() const { return hung_; }
 
     uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags wanted) const;
 
@@ -102,6 +105,7 @@ class Context {
     DeviceFeatures features_;
     std::string driver_name_, driver_info_;
     bool validation_ = false;
+    bool hung_ = false;
     UniqueCommandPool pool_;
 
     mutable std::mutex msg_mutex_;

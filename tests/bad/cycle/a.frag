@@ -1,0 +1,5 @@
+#version 450
+layout(location = 0) in vec2 uv;
+layout(location = 0) out vec4 color;
+uniform sampler2D y;
+void main() { color = texture(y, uv); }

@@ -1,0 +1,2 @@
+float b();
+#include "a.glsl"

@@ -1,0 +1,5 @@
+#version 450
+
+#include "nowhere.glsl"
+layout(location = 0) out vec4 color;
+void main() { color = vec4(1.0); }
