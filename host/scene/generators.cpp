@@ -95,7 +95,9 @@ Error bad_arg(const std::string& gen, const std::string& name, const std::string
 
 } // namespace
 
-std::vector<std::string> generator_names() { return {"plane", "cube", "sphere", "torus"}; }
+Result<Mesh> teapot_mesh(int subdivisions);  // teapot.cpp
+
+std::vector<std::string> generator_names() { return {"plane", "cube", "sphere", "torus", "teapot"}; }
 
 Result<Mesh> generate_mesh(const std::string& gen, const std::map<std::string, double>& a) {
     Mesh m;
@@ -111,12 +113,20 @@ Result<Mesh> generate_mesh(const std::string& gen, const std::map<std::string, d
     else if (gen == "cube") m = cube(float(size));
     else if (gen == "sphere") m = sphere(float(radius), int(seg), int(rings));
     else if (gen == "torus") m = torus(float(radius), float(tube), int(seg), int(rings));
+    else if (gen == "teapot") {
+        auto t = teapot_mesh(static_cast<int>(arg(a, "subdivisions", 8)));
+        if (!t) return t.error();
+        m = std::move(t.value());
+        if (size != 1.0)
+            for (auto& v : m.vertices)
+                for (float& c : v.position) c *= float(size);
+    }
     else {
         auto names = generator_names();
         Error e = make_error("unknown mesh generator '" + gen + "'");
         std::string near = nearest_name(gen, names);
         if (!near.empty()) e.hint = "did you mean '" + near + "'?";
-        e.notes.push_back("generators: plane, cube, sphere, torus");
+        e.notes.push_back("generators: plane, cube, sphere, torus, teapot");
         return e;
     }
     compute_tangents(m);
