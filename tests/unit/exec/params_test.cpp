@@ -54,7 +54,7 @@ TEST(Params, OverrideErrors) {
     ps[0].max = 2.0;
     auto out = apply_param_override(ps, "gain=5");
     ASSERT_FALSE(out);
-    EXPECT_NE(out.error().message.find("above max"), std::string::npos);
+    EXPECT_NE(out.error().message.find("value 5 is above its max 2"), std::string::npos) << out.error().message;
     auto unknown = apply_param_override(ps, "gian=1");
     ASSERT_FALSE(unknown);
     EXPECT_EQ(unknown.error().hint, "did you mean 'gain'?");
