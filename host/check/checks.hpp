@@ -18,6 +18,7 @@ struct CheckResult {
     std::string what;   // "probe uv=(0.5,0.5)", "golden snapshots/x.png", ...
     bool passed = false;
     std::string detail; // measured values vs tolerance
+    std::string expected_file, actual_file, diff_file;  // goldens, for reports
 };
 
 struct CaseResult {
@@ -29,6 +30,7 @@ struct CaseResult {
     std::vector<std::string> validation;  // validation-layer messages seen during the case
     std::string error;                    // build/render error (formatted), if any
     double ms = 0.0;
+    std::string image_file;  // the checked image, written when a report is requested
 };
 
 struct RunOptions {
@@ -37,6 +39,7 @@ struct RunOptions {
     std::string update_only; // with update: only this case name
     std::filesystem::path cache_dir;
     std::filesystem::path fail_dir;  // where actual/expected/diff images of failures go
+    std::filesystem::path report_dir;  // when set, every case's image is written there too
 };
 
 // Runs every [[test]] of one preset on `ctx`.

@@ -118,6 +118,7 @@ Result<std::unique_ptr<Executor>> Executor::create(vk::Context& ctx, CompiledGra
 Status Executor::render(const FrameInput& in) {
     CompiledGraph& g = *graph_;
     frame_parity_ = frames_rendered_ & 1;
+    instance_order_ = in.instance_order;
 
     // Frame block.
     FrameBlock fb{};

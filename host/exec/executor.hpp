@@ -18,6 +18,11 @@
 
 namespace pl::exec {
 
+// Order in which the instances of a draw are submitted. `reversed` and `shuffled` draw one
+// instance per call with firstInstance = its index, so gl_InstanceIndex is unchanged and only
+// the order differs: the basis of the `order_independent` test property.
+enum class InstanceOrder { natural, reversed, shuffled };
+
 struct FrameInput {
     double time = 0.0;
     double delta = 1.0 / 60.0;
@@ -25,6 +30,7 @@ struct FrameInput {
     glm::vec4 mouse{0.0f};
     std::optional<graph::OrbitCamera> camera;  // default: [view].camera
     glm::vec2 jitter{0.0f};                    // sub-pixel offset in pixels
+    InstanceOrder instance_order = InstanceOrder::natural;
 };
 
 struct PassTiming {
@@ -64,6 +70,7 @@ class Executor {
     vk::UniqueQueryPool queries_;
     bool timestamps_ = false;
     std::vector<PassTiming> timings_;
+    InstanceOrder instance_order_ = InstanceOrder::natural;
     int frame_parity_ = 0;  // which physical image of a history pair is "current"
     int frames_rendered_ = 0;
     glm::mat4 prev_view_proj_{1.0f};

@@ -374,6 +374,21 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
             VkBuffer ib = phys_buffer(pd.indirect, false)->buffer.buffer;
             if (mesh) vkCmdDrawIndexedIndirect(cb, ib, pd.indirect_offset, 1, sizeof(VkDrawIndexedIndirectCommand));
             else vkCmdDrawIndirect(cb, ib, pd.indirect_offset, 1, sizeof(VkDrawIndirectCommand));
+        } else if (instance_order_ != InstanceOrder::natural && instances > 1) {
+            // One call per instance, in permuted order; firstInstance keeps gl_InstanceIndex.
+            std::vector<uint32_t> order(instances);
+            for (uint32_t i = 0; i < instances; ++i) order[i] = instances - 1 - i;
+            if (instance_order_ == InstanceOrder::shuffled) {
+                uint32_t state = 0x9e3779b9u;  // fixed seed: the shuffle is the same every run
+                for (uint32_t i = instances - 1; i > 0; --i) {
+                    state = state * 1664525u + 1013904223u;
+                    std::swap(order[i], order[state % (i + 1)]);
+                }
+            }
+            for (uint32_t i : order) {
+                if (mesh) vkCmdDrawIndexed(cb, mesh->index_count, 1, 0, 0, i);
+                else vkCmdDraw(cb, static_cast<uint32_t>(std::max(0, pd.vertex_count)), 1, 0, i);
+            }
         } else if (mesh) {
             vkCmdDrawIndexed(cb, mesh->index_count, instances, 0, 0, 0);
         } else {
