@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
     test_cmd->add_flag("--no-validation", to.no_validation, "Do not enable the validation layer");
     test_cmd->add_flag("-v,--verbose", to.verbose, "Print every check, not only failures");
     test_cmd->add_option("--fail-dir", to.fail_dir, "Where actual/expected/diff images of failures go");
+    test_cmd->add_option("--report", to.report_dir, "Write an HTML report with every case into this folder");
     add_common(test_cmd);
 
     std::string preset;
@@ -55,6 +56,13 @@ int main(int argc, char** argv) {
     bool verbose = false;
     auto* list_cmd = app.add_subcommand("list", "List the presets with family and summary");
     list_cmd->add_flag("-v,--verbose", verbose, "Also print each preset's folder");
+
+    std::string gallery_dir;
+    int gallery_width = 320;
+    auto* gallery_cmd = app.add_subcommand("gallery", "Render every preset's thumbnail into an HTML gallery and a contact sheet");
+    gallery_cmd->add_option("-o,--out", gallery_dir, "Output folder")->required();
+    gallery_cmd->add_option("--width", gallery_width, "Thumbnail width in pixels")->check(CLI::Range(16, 2048));
+    add_common(gallery_cmd);
 
     bool dot = false;
     auto* graph_cmd = app.add_subcommand("graph", "Print a preset's pass graph");
@@ -73,6 +81,7 @@ int main(int argc, char** argv) {
     if (test_cmd->parsed()) return test(to, common);
     if (check_cmd->parsed()) return check(preset, set, common);
     if (list_cmd->parsed()) return list(verbose);
+    if (gallery_cmd->parsed()) return gallery(gallery_dir, gallery_width, common);
     if (graph_cmd->parsed()) return graph_dot(preset, common);
     return 2;
 }

@@ -3,10 +3,12 @@
 #include "verbs.hpp"
 
 #include "check/checks.hpp"
+#include "report.hpp"
 #include "exec/build.hpp"
 #include "vk/context.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -62,11 +64,15 @@ int test(const TestOptions& o, const CommonOptions& c) {
     ro.update_only = o.update_case;
     ro.cache_dir = cache_dir(c);
     ro.fail_dir = o.fail_dir;
+    ro.report_dir = o.report_dir;
+    auto t0 = std::chrono::steady_clock::now();
+    std::vector<ReportEntry> entries;
 
     int passed = 0, failed = 0, skipped = 0;
     for (const auto& p : presets) {
         auto results = check::run_preset_tests(**ctx, p, ro);
         std::string where = fs::proximate(p.parent_path()).string();
+        for (const auto& r : results) entries.push_back({where, r});
         for (const auto& r : results) {
             if (r.skipped) {
                 ++skipped;
@@ -86,6 +92,11 @@ int test(const TestOptions& o, const CommonOptions& c) {
             std::printf("%d passed, %d failed\n", passed, failed + 1);
             exit_after_hang(1);
         }
+    }
+    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (!o.report_dir.empty()) {
+        write_report(o.report_dir, entries, (*ctx)->device_description(), ms);
+        std::printf("report: %s\n", (fs::path(o.report_dir) / "index.html").string().c_str());
     }
     std::printf("%d passed, %d failed", passed, failed);
     if (skipped) std::printf(", %d skipped", skipped);

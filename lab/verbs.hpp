@@ -38,12 +38,14 @@ struct TestOptions {
     bool no_validation = false;
     bool verbose = false;
     std::string fail_dir = "test-failures";
+    std::string report_dir;  // --report DIR: static HTML with every case
 };
 
 int render(const RenderOptions& o, const CommonOptions& c);
 int test(const TestOptions& o, const CommonOptions& c);
 int check(const std::string& preset, const std::vector<std::string>& set, const CommonOptions& c);
 int list(bool verbose);
+int gallery(const std::string& out_dir, int width, const CommonOptions& c);
 int graph_dot(const std::string& preset, const CommonOptions& c);
 
 // Shared helpers.

@@ -1,0 +1,23 @@
+// Static HTML outputs: the test report (`passlab test --report DIR`) and the gallery.
+#pragma once
+
+#include "check/checks.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace pl::lab {
+
+struct ReportEntry {
+    std::string where;  // preset folder, relative
+    check::CaseResult result;
+};
+
+// Writes DIR/index.html; images referenced are copied into DIR so the page is self-contained.
+void write_report(const std::filesystem::path& dir, const std::vector<ReportEntry>& entries,
+                  const std::string& device, double total_ms);
+
+std::string html_escape(const std::string& s);
+
+} // namespace pl::lab
