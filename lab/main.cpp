@@ -57,6 +57,16 @@ int main(int argc, char** argv) {
     auto* list_cmd = app.add_subcommand("list", "List the presets with family and summary");
     list_cmd->add_flag("-v,--verbose", verbose, "Also print each preset's folder");
 
+    BenchOptions bo;
+    auto* bench_cmd = app.add_subcommand("bench", "Frame and per-pass GPU timings of a preset, peak memory");
+    bench_cmd->add_option("preset", bo.preset, "Preset folder, preset.toml, or name")->required();
+    bench_cmd->add_option("--size", bo.size, "Size WxH (default: [view].size)");
+    bench_cmd->add_option("--frames", bo.frames, "Measured frames")->check(CLI::Range(1, 100000));
+    bench_cmd->add_option("--warmup", bo.warmup, "Frames rendered before measuring")->check(CLI::Range(0, 1000));
+    bench_cmd->add_option("--set", bo.set, "Param override name=value (repeatable)");
+    bench_cmd->add_option("--json", bo.json, "Also write the figures as JSON to this file");
+    add_common(bench_cmd);
+
     std::string gallery_dir;
     int gallery_width = 320;
     auto* gallery_cmd = app.add_subcommand("gallery", "Render every preset's thumbnail into an HTML gallery and a contact sheet");
@@ -81,6 +91,7 @@ int main(int argc, char** argv) {
     if (test_cmd->parsed()) return test(to, common);
     if (check_cmd->parsed()) return check(preset, set, common);
     if (list_cmd->parsed()) return list(verbose);
+    if (bench_cmd->parsed()) return bench(bo, common);
     if (gallery_cmd->parsed()) return gallery(gallery_dir, gallery_width, common);
     if (graph_cmd->parsed()) return graph_dot(preset, common);
     return 2;

@@ -41,7 +41,17 @@ struct TestOptions {
     std::string report_dir;  // --report DIR: static HTML with every case
 };
 
+struct BenchOptions {
+    std::string preset;
+    std::string size;  // "WxH"
+    int frames = 60;
+    int warmup = 5;
+    std::vector<std::string> set;
+    std::string json;  // --json FILE
+};
+
 int render(const RenderOptions& o, const CommonOptions& c);
+int bench(const BenchOptions& o, const CommonOptions& c);
 int test(const TestOptions& o, const CommonOptions& c);
 int check(const std::string& preset, const std::vector<std::string>& set, const CommonOptions& c);
 int list(bool verbose);

@@ -1,0 +1,104 @@
+// `passlab bench PRESET`: frame timings of a preset on this device. Wall time per frame covers
+// record + submit + fence wait (the CPU's view); per-pass GPU times come from timestamps.
+// Figures, not verdicts: nothing here fails on a time.
+#include "verbs.hpp"
+
+#include "exec/build.hpp"
+#include "exec/executor.hpp"
+#include "vk/context.hpp"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+
+namespace pl::lab {
+
+namespace {
+
+double percentile(std::vector<double> v, double p) {
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    size_t i = static_cast<size_t>(p * double(v.size() - 1) + 0.5);
+    return v[std::min(i, v.size() - 1)];
+}
+
+double peak_rss_mb() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return double(u.ru_maxrss) / 1024.0;  // Linux reports KiB
+}
+
+} // namespace
+
+int bench(const BenchOptions& o, const CommonOptions& c) {
+    auto size = parse_size(o.size);
+    if (!size) return report(size.error());
+    auto toml = exec::resolve_preset(o.preset);
+    if (!toml) return report(toml.error());
+    exec::BuildOptions bo;
+    bo.size = *size;
+    bo.set = o.set;
+    bo.cache_dir = cache_dir(c);
+    auto built = exec::build_graph(*toml, bo);
+    if (!built) return report(built.error());
+    vk::ContextOptions co;
+    co.device = c.device;
+    co.validation = c.validation;  // off by default: the layer costs CPU time
+    auto ctx = vk::Context::create(co);
+    if (!ctx) return report(ctx.error());
+    auto view = built->view;
+    auto ex = exec::Executor::create(**ctx, std::move(built.value()));
+    if (!ex) return report(ex.error());
+    (*ex)->set_timeout(std::chrono::milliseconds(static_cast<long long>(c.timeout_s * 1000)));
+
+    std::vector<double> frame_ms;
+    std::map<std::string, std::vector<double>> pass_ms;
+    std::vector<std::string> pass_order;
+    for (int f = 0; f < o.warmup + o.frames; ++f) {
+        exec::FrameInput in;
+        in.index = f;
+        in.time = f / 60.0;
+        auto t0 = std::chrono::steady_clock::now();
+        if (auto s = (*ex)->render(in); !s) {
+            int rc = report(s.error());
+            if ((*ctx)->hung()) exit_after_hang(rc);
+            return rc;
+        }
+        double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        if (f < o.warmup) continue;  // first frames include llvmpipe's pipeline compilation
+        frame_ms.push_back(ms);
+        for (const auto& t : (*ex)->timings()) {
+            if (!pass_ms.count(t.name)) pass_order.push_back(t.name);
+            pass_ms[t.name].push_back(t.gpu_ms);
+        }
+    }
+    double mn = *std::min_element(frame_ms.begin(), frame_ms.end());
+    double med = percentile(frame_ms, 0.5), p95 = percentile(frame_ms, 0.95), rss = peak_rss_mb();
+    std::string device = (*ctx)->device_description();
+    std::printf("preset  %s\nsize    %dx%d, %d frames after %d warm-up\ndevice  %s\n", toml->string().c_str(), view[0],
+                view[1], o.frames, o.warmup, device.c_str());
+    std::printf("frame   min %.3f ms, median %.3f ms, p95 %.3f ms (record + submit + wait)\n", mn, med, p95);
+    std::printf("memory  peak RSS %.1f MB\n", rss);
+    std::printf("%-24s %12s %12s\n", "pass", "median GPU", "p95 GPU");
+    for (const auto& n : pass_order)
+        std::printf("%-24s %9.3f ms %9.3f ms\n", n.c_str(), percentile(pass_ms[n], 0.5), percentile(pass_ms[n], 0.95));
+    if (!o.json.empty()) {
+        std::ofstream j(o.json);
+        j << "{\n  \"preset\": \"" << toml->string() << "\",\n  \"width\": " << view[0] << ",\n  \"height\": " << view[1]
+          << ",\n  \"frames\": " << o.frames << ",\n  \"warmup\": " << o.warmup << ",\n  \"device\": \"" << device
+          << "\",\n  \"frame_ms\": {\"min\": " << mn << ", \"median\": " << med << ", \"p95\": " << p95
+          << "},\n  \"peak_rss_mb\": " << rss << ",\n  \"passes\": [";
+        for (size_t i = 0; i < pass_order.size(); ++i)
+            j << (i ? ", " : "") << "{\"name\": \"" << pass_order[i] << "\", \"gpu_ms_median\": " << percentile(pass_ms[pass_order[i]], 0.5)
+              << ", \"gpu_ms_p95\": " << percentile(pass_ms[pass_order[i]], 0.95) << "}";
+        j << "]\n}\n";
+        std::printf("json    %s\n", o.json.c_str());
+    }
+    return 0;
+}
+
+} // namespace pl::lab
