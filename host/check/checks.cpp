@@ -92,6 +92,21 @@ std::optional<CheckResult> render_property(vk::Context& ctx, const fs::path& tom
         r.passed = a && b;
         return r;
     }
+    if (c.kind == "matches_variant") {
+        // The case equals itself with one param changed (e.g. a noise amplitude of 0 must give
+        // the noiseless technique, a parallax height of 0 plain normal mapping).
+        std::string param = str(c.args, "param");
+        r.what = "matches_variant " + param;
+        auto it = c.args.find("value");
+        if (param.empty() || it == c.args.end()) {
+            r.detail = "needs param = \"name\" and value = ...";
+            return r;
+        }
+        Variant v;
+        v.set[param] = it->second;
+        r.passed = compare_with(v, param + " changed", num(c.args, "tol", 1e-3));
+        return r;
+    }
     if (c.kind == "monotone") {
         // The mean of the subject over a sweep of one param moves in one direction.
         std::string param = str(c.args, "param");
@@ -204,7 +219,7 @@ std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml,
                         cr.checks.push_back({c.kind, false,
                                              "unknown check kind '" + c.kind + "' (" + c.loc.str() +
                                                  "); known: probe, no_nan, range, mean, symmetry, white_furnace, "
-                                                 "matches_pass, stable, order_independent, monotone",
+                                                 "matches_pass, matches_variant, stable, order_independent, monotone",
                                              {}, {}, {}});
                 }
             }
