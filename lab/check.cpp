@@ -6,10 +6,13 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 namespace pl::lab {
 
-int check(const std::string& preset, const std::vector<std::string>& set, const CommonOptions& c) {
+int check(const std::string& preset, const std::vector<std::string>& set, const CommonOptions& c,
+          const std::string& spirv_dir) {
     auto t0 = std::chrono::steady_clock::now();
     auto toml = exec::resolve_preset(preset);
     if (!toml) return report(toml.error());
@@ -19,6 +22,17 @@ int check(const std::string& preset, const std::vector<std::string>& set, const 
     auto built = exec::build_graph(*toml, bo);
     if (!built) return report(built.error());
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (!spirv_dir.empty()) {
+        // <pass>.<stage>.spv, exactly what the executor would hand to the driver.
+        std::filesystem::create_directories(spirv_dir);
+        for (const auto& p : built->passes)
+            for (const auto& st : p.program.stages) {
+                auto file = std::filesystem::path(spirv_dir) / (p.desc->name + "." + shader::stage_name(st.stage) + ".spv");
+                std::ofstream out(file, std::ios::binary);
+                out.write(reinterpret_cast<const char*>(st.words.data()), static_cast<std::streamsize>(st.words.size() * 4));
+                std::printf("%s\n", file.string().c_str());
+            }
+    }
     std::printf("ok: %s: %zu pass(es), %zu image(s), %zu buffer(s), %zu file(s) read, %.1f ms\n",
                 toml->string().c_str(), built->passes.size(), built->desc.images.size(),
                 built->desc.buffers.size(), built->dependencies.size(), ms);

@@ -51,6 +51,8 @@ int main(int argc, char** argv) {
     auto* check_cmd = app.add_subcommand("check", "Parse, compile, reflect and validate a preset; no rendering");
     check_cmd->add_option("preset", preset, "Preset folder, preset.toml, or name")->required();
     check_cmd->add_option("--set", set, "Param override name=value (repeatable)");
+    std::string spirv_dir;
+    check_cmd->add_option("--spirv", spirv_dir, "Also write every pass's SPIR-V into this folder");
     add_common(check_cmd);
 
     bool verbose = false;
@@ -89,7 +91,7 @@ int main(int argc, char** argv) {
 
     if (render_cmd->parsed()) return render(ro, common);
     if (test_cmd->parsed()) return test(to, common);
-    if (check_cmd->parsed()) return check(preset, set, common);
+    if (check_cmd->parsed()) return check(preset, set, common, spirv_dir);
     if (list_cmd->parsed()) return list(verbose);
     if (bench_cmd->parsed()) return bench(bo, common);
     if (gallery_cmd->parsed()) return gallery(gallery_dir, gallery_width, common);

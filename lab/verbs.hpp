@@ -53,7 +53,8 @@ struct BenchOptions {
 int render(const RenderOptions& o, const CommonOptions& c);
 int bench(const BenchOptions& o, const CommonOptions& c);
 int test(const TestOptions& o, const CommonOptions& c);
-int check(const std::string& preset, const std::vector<std::string>& set, const CommonOptions& c);
+int check(const std::string& preset, const std::vector<std::string>& set, const CommonOptions& c,
+          const std::string& spirv_dir = {});
 int list(bool verbose);
 int gallery(const std::string& out_dir, int width, const CommonOptions& c);
 int graph_dot(const std::string& preset, const CommonOptions& c);

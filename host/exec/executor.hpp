@@ -51,6 +51,9 @@ class Executor {
     const CompiledGraph& graph() const { return *graph_; }
     const std::vector<PassTiming>& timings() const { return timings_; }
     void set_timeout(std::chrono::milliseconds t) { timeout_ = t; }
+    // Per-pass GPU timestamps cost time on some drivers (lavapipe waits for the work before a
+    // timestamp): on by default, off for pure frame-time measurements.
+    void set_timestamps(bool on) { timestamps_ = on && queries_; }
 
   private:
     explicit Executor(vk::Context& ctx) : ctx_(ctx) {}

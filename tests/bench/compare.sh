@@ -1,0 +1,24 @@
+#!/bin/sh
+# Host vs floor: renders the fBm pass with `passlab bench` (tests/bench/fbm-only) and with the
+# raw-Vulkan floor on the SPIR-V passlab generates for it, then prints the throughput ratio
+# host/floor (1.0 = no host overhead; the target is >= 0.95).
+# Usage: compare.sh PASSLAB FLOOR [SIZE ...] [FRAMES]   e.g. compare.sh build/default/lab/passlab build/default/tests/bench/passlab_floor 640x360 1920x1080 60
+set -eu
+passlab=$1 floor=$2
+shift 2
+frames=60
+sizes=""
+for a in "$@"; do
+  case "$a" in *x*) sizes="$sizes $a";; *) frames=$a;; esac
+done
+[ -n "$sizes" ] || sizes="640x360 1920x1080"
+tmp=$(mktemp -d)
+"$passlab" check tests/bench/fbm-only --spirv "$tmp" --no-cache >/dev/null
+for size in $sizes; do
+  w=${size%x*} h=${size#*x}
+  host=$("$passlab" bench tests/bench/fbm-only --size "$size" --frames "$frames" --warmup 5 2>/dev/null | awk '/^frame/ {print $6}')
+  base=$("$floor" "$tmp/fbm.vertex.spv" "$tmp/fbm.fragment.spv" "$w" "$h" $((frames + 5)) | awk '{for (i = 1; i <= NF; ++i) if ($i == "median") print $(i + 1)}')
+  ratio=$(awk -v f="$base" -v h="$host" 'BEGIN { printf "%.3f", f / h }')
+  echo "fbm fragment $size: host median $host ms, floor median $base ms, throughput host/floor $ratio"
+done
+rm -rf "$tmp"
