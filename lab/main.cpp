@@ -59,6 +59,18 @@ int main(int argc, char** argv) {
     auto* list_cmd = app.add_subcommand("list", "List the presets with family and summary");
     list_cmd->add_flag("-v,--verbose", verbose, "Also print each preset's folder");
 
+    RunOptions rn;
+    auto* run_cmd = app.add_subcommand("run", "Live lab: a window with hot reload of every file the preset reads");
+    run_cmd->add_option("preset", rn.preset, "Preset folder, preset.toml, or name")->required();
+    run_cmd->add_option("--size", rn.size, "Window / view size WxH");
+    run_cmd->add_option("--time", rn.time, "Start time, seconds");
+    run_cmd->add_option("--set", rn.set, "Param override name=value (repeatable)");
+    run_cmd->add_option("--present", rn.present, "fifo, mailbox or immediate")->check(CLI::IsMember({"fifo", "mailbox", "immediate"}));
+    run_cmd->add_option("--events", rn.events, "Write JSON-lines events (reloads, frames) to this file");
+    run_cmd->add_option("--seconds", rn.seconds, "Quit after this many seconds")->check(CLI::NonNegativeNumber);
+    run_cmd->add_option("--frames", rn.frames, "Quit after this many frames")->check(CLI::NonNegativeNumber);
+    add_common(run_cmd);
+
     BenchOptions bo;
     auto* bench_cmd = app.add_subcommand("bench", "Frame and per-pass GPU timings of a preset, peak memory");
     bench_cmd->add_option("preset", bo.preset, "Preset folder, preset.toml, or name")->required();
@@ -94,6 +106,7 @@ int main(int argc, char** argv) {
     if (check_cmd->parsed()) return check(preset, set, common, spirv_dir);
     if (list_cmd->parsed()) return list(verbose);
     if (bench_cmd->parsed()) return bench(bo, common);
+    if (run_cmd->parsed()) return run(rn, common);
     if (gallery_cmd->parsed()) return gallery(gallery_dir, gallery_width, common);
     if (graph_cmd->parsed()) return graph_dot(preset, common);
     return 2;

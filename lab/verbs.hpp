@@ -41,6 +41,17 @@ struct TestOptions {
     std::string report_dir;  // --report DIR: static HTML with every case
 };
 
+struct RunOptions {
+    std::string preset;
+    std::string size;
+    double time = 0.0;
+    std::vector<std::string> set;
+    std::string present = "fifo";  // fifo | mailbox | immediate
+    std::string events;  // --events FILE: JSON lines
+    double seconds = 0;            // stop after this long (tests); 0 = until closed
+    int frames = 0;                // stop after this many frames; 0 = until closed
+};
+
 struct BenchOptions {
     std::string preset;
     std::string size;  // "WxH"
@@ -52,6 +63,7 @@ struct BenchOptions {
 
 int render(const RenderOptions& o, const CommonOptions& c);
 int bench(const BenchOptions& o, const CommonOptions& c);
+int run(const RunOptions& o, const CommonOptions& c);
 int test(const TestOptions& o, const CommonOptions& c);
 int check(const std::string& preset, const std::vector<std::string>& set, const CommonOptions& c,
           const std::string& spirv_dir = {});

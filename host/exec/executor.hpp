@@ -48,6 +48,10 @@ class Executor {
     // Reads back an image (its current contents, after the last frame) as RGBA float.
     Result<image::Image> read(const std::string& image, int mip = 0, int layer = 0);
 
+    // Records a blit of `image` (its current contents) into `dst`, which the caller has put in
+    // TRANSFER_DST_OPTIMAL; the source's transition comes from the planner. For presenting.
+    Status record_blit_to(VkCommandBuffer cb, const std::string& image, VkImage dst, VkExtent2D dst_extent);
+
     const CompiledGraph& graph() const { return *graph_; }
     const std::vector<PassTiming>& timings() const { return timings_; }
     void set_timeout(std::chrono::milliseconds t) { timeout_ = t; }

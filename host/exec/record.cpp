@@ -399,6 +399,26 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
     return ok_status();
 }
 
+Status Executor::record_blit_to(VkCommandBuffer cb, const std::string& name, VkImage dst, VkExtent2D ext) {
+    auto it = res_.images.find(name);
+    if (it == res_.images.end()) return make_error("no image named '" + name + "' to show");
+    int parity = frames_rendered_ > 0 ? (frames_rendered_ - 1) & 1 : 0;
+    PhysImage* p = it->second.phys[static_cast<size_t>(parity)].get();
+    const auto& info = p->image.info();
+    if (info.samples != VK_SAMPLE_COUNT_1_BIT || (p->image.aspect() & VK_IMAGE_ASPECT_DEPTH_BIT))
+        return make_error("image '" + name + "' cannot be shown (multisampled or depth)");
+    BarrierBatch batch;
+    require(batch, *p, usage_of(Access::transfer_src, 0));
+    batch.flush(cb);
+    VkImageBlit b{.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                  .srcOffsets = {{0, 0, 0}, {static_cast<int32_t>(info.extent.width), static_cast<int32_t>(info.extent.height), 1}},
+                  .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                  .dstOffsets = {{0, 0, 0}, {static_cast<int32_t>(ext.width), static_cast<int32_t>(ext.height), 1}}};
+    vkCmdBlitImage(cb, p->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &b,
+                   VK_FILTER_LINEAR);
+    return ok_status();
+}
+
 Result<image::Image> Executor::read(const std::string& name, int mip, int layer) {
     auto it = res_.images.find(name);
     if (it == res_.images.end()) {

@@ -1,0 +1,218 @@
+#include "window.hpp"
+
+#include "vk/check.hpp"
+
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+
+namespace pl::lab {
+
+Result<std::vector<std::string>> init_glfw_and_list_extensions() {
+    if (!glfwInit()) {
+        Error e = make_error("cannot open a window: no display (passlab run needs X11 or Wayland; "
+                             "the headless verbs render, test and check do not)");
+        e.code = ExitCode::environment;
+        return e;
+    }
+    uint32_t n = 0;
+    const char** names = glfwGetRequiredInstanceExtensions(&n);
+    if (!names) {
+        Error e = make_error("GLFW found no Vulkan surface support");
+        e.code = ExitCode::environment;
+        return e;
+    }
+    return std::vector<std::string>(names, names + n);
+}
+
+Result<std::unique_ptr<Window>> Window::create(vk::Context& ctx, int width, int height, const std::string& title,
+                                               VkPresentModeKHR mode) {
+    std::unique_ptr<Window> w(new Window(ctx));
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);  // HiDPI: the framebuffer size decides
+    w->window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    if (!w->window_) {
+        Error e = make_error("cannot create a window");
+        e.code = ExitCode::environment;
+        return e;
+    }
+    if (glfwCreateWindowSurface(ctx.instance(), w->window_, nullptr, &w->surface_) != VK_SUCCESS) {
+        Error e = make_error("cannot create a Vulkan surface for the window");
+        e.code = ExitCode::environment;
+        return e;
+    }
+    VkBool32 supported = VK_FALSE;
+    vkGetPhysicalDeviceSurfaceSupportKHR(ctx.physical(), ctx.queue_family(), w->surface_, &supported);
+    if (!supported) {
+        Error e = make_error("the chosen Vulkan queue cannot present to this window");
+        e.code = ExitCode::environment;
+        return e;
+    }
+    w->mode_ = mode;
+    VkCommandPoolCreateInfo pci{.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
+                                .flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT,
+                                .queueFamilyIndex = ctx.queue_family()};
+    VkCommandPool pool;
+    VK_CHECK(vkCreateCommandPool(ctx.device(), &pci, nullptr, &pool));
+    w->pool_ = vk::UniqueCommandPool(ctx.device(), pool);
+    VkCommandBufferAllocateInfo ai{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
+                                   .commandPool = pool,
+                                   .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
+                                   .commandBufferCount = 1};
+    VK_CHECK(vkAllocateCommandBuffers(ctx.device(), &ai, &w->cmd_));
+    VkSemaphoreCreateInfo sci{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    VkSemaphore s1, s2;
+    VK_CHECK(vkCreateSemaphore(ctx.device(), &sci, nullptr, &s1));
+    VK_CHECK(vkCreateSemaphore(ctx.device(), &sci, nullptr, &s2));
+    w->acquired_ = vk::UniqueSemaphore(ctx.device(), s1);
+    w->rendered_ = vk::UniqueSemaphore(ctx.device(), s2);
+    VkFenceCreateInfo fci{.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence f;
+    VK_CHECK(vkCreateFence(ctx.device(), &fci, nullptr, &f));
+    w->fence_ = vk::UniqueFence(ctx.device(), f);
+    if (auto s = w->create_swapchain(); !s) return s.error();
+    return w;
+}
+
+Window::~Window() {
+    if (ctx_.device() && !ctx_.hung()) vkDeviceWaitIdle(ctx_.device());
+    destroy_swapchain();
+    if (surface_) vkDestroySurfaceKHR(ctx_.instance(), surface_, nullptr);
+    if (window_) glfwDestroyWindow(window_);
+}
+
+void Window::destroy_swapchain() {
+    if (swapchain_) vkDestroySwapchainKHR(ctx_.device(), swapchain_, nullptr);
+    swapchain_ = VK_NULL_HANDLE;
+    images_.clear();
+}
+
+Status Window::create_swapchain() {
+    VkSurfaceCapabilitiesKHR caps;
+    VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(ctx_.physical(), surface_, &caps));
+    int fw = 0, fh = 0;
+    glfwGetFramebufferSize(window_, &fw, &fh);
+    extent_ = caps.currentExtent.width != UINT32_MAX
+                  ? caps.currentExtent
+                  : VkExtent2D{std::clamp(static_cast<uint32_t>(fw), caps.minImageExtent.width, caps.maxImageExtent.width),
+                               std::clamp(static_cast<uint32_t>(fh), caps.minImageExtent.height, caps.maxImageExtent.height)};
+    if (extent_.width == 0 || extent_.height == 0) return ok_status();  // minimised
+    uint32_t n = 0;
+    vkGetPhysicalDeviceSurfaceFormatsKHR(ctx_.physical(), surface_, &n, nullptr);
+    std::vector<VkSurfaceFormatKHR> formats(n);
+    vkGetPhysicalDeviceSurfaceFormatsKHR(ctx_.physical(), surface_, &n, formats.data());
+    // The output image holds display-ready values (sRGB-encoded when it is rgba8_srgb), and a
+    // blit copies them: a UNORM swapchain presents them unchanged.
+    VkSurfaceFormatKHR chosen = formats.at(0);
+    for (const auto& f : formats)
+        if (f.format == VK_FORMAT_B8G8R8A8_UNORM || f.format == VK_FORMAT_R8G8B8A8_UNORM) chosen = f;
+    format_ = chosen.format;
+    uint32_t pm_n = 0;
+    vkGetPhysicalDeviceSurfacePresentModesKHR(ctx_.physical(), surface_, &pm_n, nullptr);
+    std::vector<VkPresentModeKHR> modes(pm_n);
+    vkGetPhysicalDeviceSurfacePresentModesKHR(ctx_.physical(), surface_, &pm_n, modes.data());
+    VkPresentModeKHR mode = std::find(modes.begin(), modes.end(), mode_) != modes.end() ? mode_ : VK_PRESENT_MODE_FIFO_KHR;
+    VkSwapchainCreateInfoKHR sci{.sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR,
+                                 .surface = surface_,
+                                 .minImageCount = std::max(caps.minImageCount, 2u),
+                                 .imageFormat = chosen.format,
+                                 .imageColorSpace = chosen.colorSpace,
+                                 .imageExtent = extent_,
+                                 .imageArrayLayers = 1,
+                                 .imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                 .imageSharingMode = VK_SHARING_MODE_EXCLUSIVE,
+                                 .preTransform = caps.currentTransform,
+                                 .compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR,
+                                 .presentMode = mode,
+                                 .clipped = VK_TRUE,
+                                 .oldSwapchain = swapchain_};
+    VkSwapchainKHR sc;
+    VK_CHECK(vkCreateSwapchainKHR(ctx_.device(), &sci, nullptr, &sc));
+    destroy_swapchain();
+    swapchain_ = sc;
+    uint32_t count = 0;
+    vkGetSwapchainImagesKHR(ctx_.device(), swapchain_, &count, nullptr);
+    images_.resize(count);
+    vkGetSwapchainImagesKHR(ctx_.device(), swapchain_, &count, images_.data());
+    return ok_status();
+}
+
+bool Window::should_close() const { return glfwWindowShouldClose(window_); }
+void Window::poll() { glfwPollEvents(); }
+void Window::set_title(const std::string& t) { glfwSetWindowTitle(window_, t.c_str()); }
+
+Status Window::present(const std::function<Status(VkCommandBuffer, VkImage, VkExtent2D)>& record) {
+    if (!swapchain_) {
+        if (auto s = create_swapchain(); !s || !swapchain_) return s;
+    }
+    uint32_t index = 0;
+    VkResult r = vkAcquireNextImageKHR(ctx_.device(), swapchain_, UINT64_MAX, acquired_, VK_NULL_HANDLE, &index);
+    if (r == VK_ERROR_OUT_OF_DATE_KHR) {
+        vkDeviceWaitIdle(ctx_.device());
+        return create_swapchain();
+    }
+    if (r != VK_SUBOPTIMAL_KHR) VK_CHECK(r);
+    VK_CHECK(vkResetCommandBuffer(cmd_, 0));
+    VkCommandBufferBeginInfo bi{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+                                .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+    VK_CHECK(vkBeginCommandBuffer(cmd_, &bi));
+    // The swapchain image is outside the graph: its two transitions are the window's own.
+    auto barrier = [&](VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 src, VkAccessFlags2 sa,
+                       VkPipelineStageFlags2 dst, VkAccessFlags2 da) {
+        VkImageMemoryBarrier2 ib{.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
+                                 .srcStageMask = src,
+                                 .srcAccessMask = sa,
+                                 .dstStageMask = dst,
+                                 .dstAccessMask = da,
+                                 .oldLayout = from,
+                                 .newLayout = to,
+                                 .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                                 .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                                 .image = images_[index],
+                                 .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1}};
+        VkDependencyInfo di{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &ib};
+        vkCmdPipelineBarrier2(cmd_, &di);
+    };
+    barrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, 0,
+            VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    VkClearColorValue black{};
+    VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdClearColorImage(cmd_, images_[index], VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &black, 1, &range);
+    barrier(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    Status st = record(cmd_, images_[index], extent_);
+    barrier(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0);
+    VK_CHECK(vkEndCommandBuffer(cmd_));
+    VkPipelineStageFlags wait_stage = VK_PIPELINE_STAGE_TRANSFER_BIT;
+    VkSemaphore wait = acquired_, signal = rendered_;
+    VkSubmitInfo si{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO,
+                    .waitSemaphoreCount = 1,
+                    .pWaitSemaphores = &wait,
+                    .pWaitDstStageMask = &wait_stage,
+                    .commandBufferCount = 1,
+                    .pCommandBuffers = &cmd_,
+                    .signalSemaphoreCount = 1,
+                    .pSignalSemaphores = &signal};
+    VkFence f = fence_;
+    VK_CHECK(vkQueueSubmit(ctx_.queue(), 1, &si, f));
+    VkPresentInfoKHR pi{.sType = VK_STRUCTURE_TYPE_PRESENT_INFO_KHR,
+                        .waitSemaphoreCount = 1,
+                        .pWaitSemaphores = &signal,
+                        .swapchainCount = 1,
+                        .pSwapchains = &swapchain_,
+                        .pImageIndices = &index};
+    r = vkQueuePresentKHR(ctx_.queue(), &pi);
+    if (auto w = ctx_.wait(f, std::chrono::seconds(20), "present"); !w) return w;
+    VK_CHECK(vkResetFences(ctx_.device(), 1, &f));
+    if (r == VK_ERROR_OUT_OF_DATE_KHR || r == VK_SUBOPTIMAL_KHR) {
+        vkDeviceWaitIdle(ctx_.device());
+        if (auto s = create_swapchain(); !s) return s;
+    } else {
+        VK_CHECK(r);
+    }
+    return st;
+}
+
+} // namespace pl::lab

@@ -1,0 +1,81 @@
+#!/bin/sh
+# Live-reload test under Xvfb: starts `passlab run` on a copy of tests/live/preset, then edits
+# it the way editors do (write a temporary file, rename it over the original): a shader change,
+# a syntax error, its fix, an include change and a TOML change. The event log must show each
+# reload with the right outcome, and frames must keep being presented while the shader is
+# broken (keep-last-good).
+# Usage: live_reload.sh PASSLAB WORKDIR
+set -eu
+passlab=$1 work=$2
+here=$(cd "$(dirname "$0")" && pwd)
+rm -rf "$work" && mkdir -p "$work" && cp -r "$here/preset" "$work/p"
+p="$work/p" ev="$work/events.jsonl"
+save() {  # save FILE CONTENT: temp file + rename, like vim/VS Code/JetBrains
+  printf '%s\n' "$2" > "$1.tmp~" && mv "$1.tmp~" "$1"
+}
+count() {  # count PATTERN: matching lines in the event log (0 before it exists)
+  c=$(grep -c "$1" "$ev" 2>/dev/null) || c=0
+  echo "${c:-0}"
+}
+wait_for() {  # wait_for PATTERN COUNT: until the log has COUNT lines matching PATTERN (20 s max)
+  i=0
+  while [ "$(count "$1")" -lt "$2" ]; do
+    i=$((i + 1)); [ $i -lt 200 ] || { echo "timed out waiting for $2 x $1" >&2; cat "$ev" | grep -v frame-presented >&2; exit 1; }
+    sleep 0.1
+  done
+}
+# The pid file names passlab itself (exec), so the test can stop it; xvfb-run then ends Xvfb.
+xvfb-run -a -s "-screen 0 640x480x24" sh -c 'echo $$ > "$1"; exec "$2" run "$3" --events "$4" --seconds 120' sh \
+  "$work/pid" "$passlab" "$p" "$ev" > "$work/run.log" 2>&1 &
+runner=$!
+trap 'kill "$(cat "$work/pid" 2>/dev/null)" 2>/dev/null || true' EXIT
+wait_for '"started"' 1
+wait_for frame-presented 3
+
+save "$p/main.frag" '#version 450
+#include "tint.glsl"
+layout(location = 0) in vec2 uv;
+layout(location = 0) out vec4 color;
+void main() {
+    color = vec4(tint(uv).bgr * params.gain, 1.0);
+}'
+wait_for reload-ok 1
+
+save "$p/main.frag" '#version 450
+#include "tint.glsl"
+layout(location = 0) in vec2 uv;
+layout(location = 0) out vec4 color;
+void main() {
+    color = vec4(tint(uv) * params.gain, 1.0) + undefined_name;
+}'
+wait_for reload-failed 1
+n=$(count '"broken":true')
+wait_for '"broken":true' $((n + 3))   # frames keep coming from the last good pipeline
+
+save "$p/main.frag" '#version 450
+#include "tint.glsl"
+layout(location = 0) in vec2 uv;
+layout(location = 0) out vec4 color;
+void main() {
+    color = vec4(tint(uv) * params.gain, 1.0);
+}'
+wait_for reload-ok 2
+
+save "$p/tint.glsl" 'vec3 tint(vec2 uv) { return vec3(uv.yx, 0.25); }'
+wait_for reload-ok 3
+
+sed 's/value = 1.0, min/value = 0.5, min/' "$p/preset.toml" > "$p/preset.toml.tmp~" && mv "$p/preset.toml.tmp~" "$p/preset.toml"
+wait_for reload-ok 4
+wait_for frame-presented $(( $(count frame-presented) + 2 ))
+
+kill "$(cat "$work/pid")" 2>/dev/null || true
+wait "$runner" 2>/dev/null || true
+trap - EXIT
+
+fail() { echo "FAIL: $1" >&2; grep -v frame-presented "$ev" >&2; exit 1; }
+grep '"reload-failed"' "$ev" | grep -q '"file":"[^"]*main.frag","line":6' || fail "reload-failed does not name main.frag:6"
+grep '"reload-failed"' "$ev" | grep -q "undefined_name" || fail "reload-failed does not carry the compiler message"
+grep '"reload-started"' "$ev" | grep -q 'tint.glsl' || fail "the include edit was not seen"
+grep '"reload-started"' "$ev" | grep -q 'preset.toml' || fail "the TOML edit was not seen"
+grep -q 'undefined_name' "$work/run.log" || fail "the terminal did not show the error"
+echo "live reload: $(grep -c reload-ok "$ev") reloads ok, $(grep -c reload-failed "$ev") failed as expected, $(grep -c frame-presented "$ev") frames presented"
