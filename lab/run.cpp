@@ -42,8 +42,10 @@ class EventLog {
     double now_ms() const { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count(); }
     void write(const std::string& event, const std::string& fields = "") {
         if (!out_) return;
-        char t[32];
-        std::snprintf(t, sizeof t, "%.1f", now_ms());
+        char t[64];
+        // wall_ms (Unix epoch) lets a benchmark relate events to the moment it edited a file.
+        auto wall = std::chrono::duration<double, std::milli>(std::chrono::system_clock::now().time_since_epoch()).count();
+        std::snprintf(t, sizeof t, "%.1f,\"wall_ms\":%.1f", now_ms(), wall);
         out_ << "{\"event\":\"" << event << "\",\"t_ms\":" << t << (fields.empty() ? "" : "," + fields) << "}\n";
         out_.flush();
     }

@@ -1,0 +1,48 @@
+#!/bin/sh
+# Edit-to-new-frame latency of `passlab run` under Xvfb: N edits of a shader by atomic rename;
+# for each, detect = reload-started - edit, rebuild = reload-ok - reload-started (parse,
+# compile, pipelines), first frame = the next frame-presented - reload-ok (includes llvmpipe's
+# shader compilation at first draw). Prints p50/p95 of each and of the total.
+# Usage: reload_latency.sh PASSLAB [EDITS] [PRESET_DIR]
+set -eu
+passlab=$1 edits=${2:-20} src=${3:-$(dirname "$0")/../live/preset}
+work=$(mktemp -d)
+cp -r "$src" "$work/p"
+ev="$work/events.jsonl"
+xvfb-run -a -s "-screen 0 640x480x24" sh -c 'echo $$ > "$1"; exec "$2" run "$3" --events "$4" --seconds 300' sh \
+  "$work/pid" "$passlab" "$work/p" "$ev" > "$work/run.log" 2>&1 &
+trap 'kill "$(cat "$work/pid" 2>/dev/null)" 2>/dev/null || true; rm -rf "$work"' EXIT
+count() { c=$(grep -c "$1" "$ev" 2>/dev/null) || c=0; echo "${c:-0}"; }
+i=0; while [ "$(count frame-presented)" -lt 5 ]; do i=$((i+1)); [ $i -lt 300 ] || exit 1; sleep 0.1; done
+shader=$(ls "$work/p"/*.frag | head -n 1)
+src_shader="$work/original.frag"
+cp "$shader" "$src_shader"
+: > "$work/edits"
+k=1
+while [ $k -le "$edits" ]; do
+  # A different constant in the output each time, so every edit changes the generated code
+  # (an unused constant would be optimised away and hit Mesa's shader cache).
+  sed "s|color = vec4(\(.*\), 1.0);|color = vec4(\1 * (1.0 + 0.0001 * $k.0), 1.0);|" "$src_shader" > "$shader.tmp~"
+  before=$(count reload-ok)
+  date +%s%3N >> "$work/edits"
+  mv "$shader.tmp~" "$shader"
+  i=0; while [ "$(count reload-ok)" -le "$before" ]; do i=$((i+1)); [ $i -lt 300 ] || { echo "no reload" >&2; exit 1; }; sleep 0.02; done
+  sleep 0.3
+  k=$((k + 1))
+done
+awk -v edits="$work/edits" '
+  function pct(a, n, p,   i, j, t) { for (i = 1; i <= n; ++i) for (j = i + 1; j <= n; ++j) if (a[j] < a[i]) { t = a[i]; a[i] = a[j]; a[j] = t }
+                                     return a[int(p * (n - 1) + 0.5) + 1] }
+  function field(line, key,   s) { s = line; sub(".*\"" key "\":", "", s); sub("[,}].*", "", s); return s + 0 }
+  BEGIN { n = 0; while ((getline l < edits) > 0) edit[++n] = l + 0 }
+  /"reload-started"/ { started[++ns] = field($0, "wall_ms") }
+  /"reload-ok"/ { ok[++no] = field($0, "wall_ms"); want_frame = no }
+  /"frame-presented"/ && want_frame { frame[want_frame] = field($0, "wall_ms"); want_frame = 0 }
+  END {
+    for (k = 1; k <= n; ++k) { d[k] = started[k] - edit[k]; r[k] = ok[k] - started[k]; f[k] = frame[k] - ok[k]; t[k] = frame[k] - edit[k] }
+    printf "edits %d\n", n
+    printf "detect       p50 %6.1f ms  p95 %6.1f ms\n", pct(d, n, 0.5), pct(d, n, 0.95)
+    printf "rebuild      p50 %6.1f ms  p95 %6.1f ms  (parse, compile, pipelines)\n", pct(r, n, 0.5), pct(r, n, 0.95)
+    printf "first frame  p50 %6.1f ms  p95 %6.1f ms  (render incl. first-draw compile, present)\n", pct(f, n, 0.5), pct(f, n, 0.95)
+    printf "total        p50 %6.1f ms  p95 %6.1f ms\n", pct(t, n, 0.5), pct(t, n, 0.95)
+  }' "$ev"
