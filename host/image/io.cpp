@@ -1,37 +1,69 @@
-// Image files through OpenImageIO. Writes go to a temporary file that is renamed into place, so
-// an interrupted run never leaves a truncated PNG behind.
+// Image files. Reading (any format) and EXR writing use OpenImageIO, loaded as a plugin on
+// first use (see oiio_plugin/plugin.cpp for why). 8-bit PNG writing — every `render` and every
+// golden — uses stb_image_write, linked directly, so the common path never loads OpenImageIO's
+// ~260 libraries. Writes go to a temporary file that is renamed into place, so an interrupted
+// run never leaves a truncated image behind.
 #include "image/image.hpp"
 
-#include <OpenImageIO/imageio.h>
+#include <dlfcn.h>
+#include <stb/stb_image_write.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <mutex>
+#include <vector>
 
 namespace fs = std::filesystem;
 
 namespace pl::image {
 
+namespace {
+
+struct Plugin {
+    int (*load)(const char*, int*, int*, float**, char*, size_t) = nullptr;
+    void (*free_pixels)(float*) = nullptr;
+    int (*save)(const char*, int, int, const float*, int, int, char*, size_t) = nullptr;
+    std::string error;
+};
+
+const Plugin& plugin() {
+    static Plugin p;
+    static std::once_flag once;
+    std::call_once(once, [] {
+        const char* env = std::getenv("PASSLAB_OIIO_PLUGIN");
+        std::string path = env ? env : PASSLAB_OIIO_PLUGIN;
+        void* h = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!h) {
+            p.error = std::string("cannot load the image I/O plugin '") + path + "': " + dlerror();
+            return;
+        }
+        p.load = reinterpret_cast<decltype(p.load)>(dlsym(h, "pl_oiio_load"));
+        p.free_pixels = reinterpret_cast<decltype(p.free_pixels)>(dlsym(h, "pl_oiio_free"));
+        p.save = reinterpret_cast<decltype(p.save)>(dlsym(h, "pl_oiio_save"));
+        if (!p.load || !p.free_pixels || !p.save) p.error = "the image I/O plugin '" + path + "' lacks its functions";
+    });
+    return p;
+}
+
+Error environment_error(std::string msg) {
+    Error e = make_error(std::move(msg));
+    e.code = ExitCode::environment;
+    return e;
+}
+
+} // namespace
+
 Result<Image> load_image(const fs::path& file) {
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in) return make_error("cannot read image '" + file.string() + "': " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.width > 16384 || spec.height > 16384)
-        return make_error("image '" + file.string() + "' has an unsupported size");
-    int nc = spec.nchannels;
-    std::vector<float> raw(static_cast<size_t>(spec.width) * spec.height * nc);
-    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, raw.data()))
-        return make_error("cannot decode image '" + file.string() + "': " + in->geterror());
+    const Plugin& p = plugin();
+    if (!p.error.empty()) return environment_error(p.error);
+    char err[512] = {0};
     Image img;
-    img.width = spec.width;
-    img.height = spec.height;
-    img.pixels.resize(static_cast<size_t>(img.width) * img.height * 4);
-    for (size_t i = 0; i < static_cast<size_t>(img.width) * img.height; ++i) {
-        const float* s = &raw[i * nc];
-        float* d = &img.pixels[i * 4];
-        if (nc >= 3) d[0] = s[0], d[1] = s[1], d[2] = s[2];
-        else d[0] = d[1] = d[2] = s[0];  // gray (+ alpha)
-        d[3] = nc == 4 ? s[3] : nc == 2 ? s[1] : 1.0f;
-    }
+    float* pixels = nullptr;
+    if (p.load(file.c_str(), &img.width, &img.height, &pixels, err, sizeof err) != 0)
+        return make_error("cannot read image '" + file.string() + "': " + err);
+    img.pixels.assign(pixels, pixels + static_cast<size_t>(img.width) * img.height * 4);
+    p.free_pixels(pixels);
     return img;
 }
 
@@ -40,32 +72,33 @@ Status save_image(const Image& img, const fs::path& file, const SaveOptions& opt
     std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
     if (ext != ".png" && ext != ".exr") return make_error("cannot write '" + file.string() + "': use .png or .exr");
     fs::path tmp = file;
-    tmp += ".tmp" + ext;  // keep the extension: OIIO picks the format from it
-    auto out = OIIO::ImageOutput::create(tmp.string());
-    if (!out) return make_error("cannot write '" + file.string() + "': " + OIIO::geterror());
-    bool png = ext == ".png";
-    OIIO::ImageSpec spec(img.width, img.height, 4,
-                         png ? OIIO::TypeDesc::UINT8 : (opt.exr_half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT));
-    if (png) spec.attribute("png:compressionLevel", opt.png_compression);
-    else spec.attribute("compression", "zip");
-    if (!out->open(tmp.string(), spec)) return make_error("cannot write '" + file.string() + "': " + out->geterror());
-    bool ok;
-    if (png) {
-        // Round to nearest after clamping: OIIO's own conversion would do the same, explicitly here.
-        std::vector<uint8_t> bytes(img.pixels.size());
-        for (size_t i = 0; i < bytes.size(); ++i) {
-            float v = img.pixels[i];
-            bytes[i] = static_cast<uint8_t>(std::lround(std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f) * 255.0f));
-        }
-        ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
-    } else {
-        ok = out->write_image(OIIO::TypeDesc::FLOAT, img.pixels.data());
-    }
-    ok = out->close() && ok;
+    tmp += ".tmp" + ext;  // keep the extension: the codec is chosen from it
     std::error_code ec;
-    if (!ok) {
+    if (ext == ".png") {
+        size_t n = img.pixels.size();
+        std::vector<unsigned char> bytes(n);
+        for (size_t i = 0; i < n; ++i) {
+            float v = img.pixels[i];
+            bytes[i] = static_cast<unsigned char>(std::lround(std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f) * 255.0f));
+        }
+        // stb's level is zlib-like (higher = smaller); its default is 8.
+        stbi_write_png_compression_level = std::clamp(opt.png_compression, 1, 9);
+        if (!stbi_write_png(tmp.c_str(), img.width, img.height, 4, bytes.data(), img.width * 4)) {
+            fs::remove(tmp, ec);
+            return make_error("cannot write '" + file.string() + "'");
+        }
+        fs::rename(tmp, file, ec);
+        if (ec) return make_error("cannot write '" + file.string() + "': " + ec.message());
+        return ok_status();
+    }
+    const Plugin& p = plugin();
+    if (!p.error.empty()) return environment_error(p.error);
+    char err[512] = {0};
+    if (p.save(tmp.c_str(), img.width, img.height, img.pixels.data(), opt.png_compression, opt.exr_half ? 1 : 0, err,
+               sizeof err) != 0) {
+        std::error_code ec;
         fs::remove(tmp, ec);
-        return make_error("cannot write '" + file.string() + "': " + out->geterror());
+        return make_error("cannot write '" + file.string() + "': " + err);
     }
     fs::rename(tmp, file, ec);
     if (ec) return make_error("cannot write '" + file.string() + "': " + ec.message());
