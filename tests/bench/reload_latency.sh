@@ -3,9 +3,13 @@
 # for each, detect = reload-started - edit, rebuild = reload-ok - reload-started (parse,
 # compile, pipelines), first frame = the next frame-presented - reload-ok (includes llvmpipe's
 # shader compilation at first draw). Prints p50/p95 of each and of the total.
-# Usage: reload_latency.sh PASSLAB [EDITS] [PRESET_DIR]
+# The edited file holds the token /*KNOB*/1.0; each edit writes a different number there, so
+# the generated code really changes (an unused constant would hit Mesa's shader cache).
+# Usage: reload_latency.sh PASSLAB [EDITS] [PRESET_DIR FILE]
+#   reload_latency.sh build/default/lab/passlab 20                                 single pass
+#   reload_latency.sh build/default/lab/passlab 20 tests/bench/ten-pass shared.glsl  include of 10 passes
 set -eu
-passlab=$1 edits=${2:-20} src=${3:-$(dirname "$0")/../live/preset}
+passlab=$1 edits=${2:-20} src=${3:-$(dirname "$0")/../live/preset} file=${4:-main.frag}
 work=$(mktemp -d)
 cp -r "$src" "$work/p"
 ev="$work/events.jsonl"
@@ -14,15 +18,12 @@ xvfb-run -a -s "-screen 0 640x480x24" sh -c 'echo $$ > "$1"; exec "$2" run "$3" 
 trap 'kill "$(cat "$work/pid" 2>/dev/null)" 2>/dev/null || true; rm -rf "$work"' EXIT
 count() { c=$(grep -c "$1" "$ev" 2>/dev/null) || c=0; echo "${c:-0}"; }
 i=0; while [ "$(count frame-presented)" -lt 5 ]; do i=$((i+1)); [ $i -lt 300 ] || exit 1; sleep 0.1; done
-shader=$(ls "$work/p"/*.frag | head -n 1)
-src_shader="$work/original.frag"
-cp "$shader" "$src_shader"
+shader="$work/p/$file"
+grep -q '/\*KNOB\*/' "$shader" || { echo "$file has no /*KNOB*/ token" >&2; exit 2; }
 : > "$work/edits"
 k=1
 while [ $k -le "$edits" ]; do
-  # A different constant in the output each time, so every edit changes the generated code
-  # (an unused constant would be optimised away and hit Mesa's shader cache).
-  sed "s|color = vec4(\(.*\), 1.0);|color = vec4(\1 * (1.0 + 0.0001 * $k.0), 1.0);|" "$src_shader" > "$shader.tmp~"
+  sed "s|/\*KNOB\*/[0-9.]*|/*KNOB*/1.$(printf '%04d' $k)|" "$shader" > "$shader.tmp~"
   before=$(count reload-ok)
   date +%s%3N >> "$work/edits"
   mv "$shader.tmp~" "$shader"
