@@ -35,14 +35,10 @@ double peak_rss_mb() {
 } // namespace
 
 int bench(const BenchOptions& o, const CommonOptions& c) {
-    auto size = parse_size(o.size);
-    if (!size) return report(size.error());
-    auto toml = exec::resolve_preset(o.preset);
-    if (!toml) return report(toml.error());
-    exec::BuildOptions bo;
-    bo.size = *size;
-    bo.set = o.set;
-    bo.cache_dir = cache_dir(c);
+    auto lp = resolve_and_configure(o.preset, o.size, o.set, c);
+    if (!lp) return report(lp.error());
+    const auto toml = &lp->toml;
+    exec::BuildOptions& bo = lp->options;
     auto built = exec::build_graph(*toml, bo);
     if (!built) return report(built.error());
     vk::ContextOptions co;

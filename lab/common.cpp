@@ -45,4 +45,18 @@ Result<std::optional<std::array<int, 2>>> parse_size(const std::string& s) {
     return std::optional<std::array<int, 2>>{std::array<int, 2>{w, h}};
 }
 
+Result<LoadedPreset> resolve_and_configure(const std::string& preset, const std::string& size,
+                                           const std::vector<std::string>& set, const CommonOptions& c) {
+    auto parsed = parse_size(size);
+    if (!parsed) return parsed.error();
+    auto toml = exec::resolve_preset(preset);
+    if (!toml) return toml.error();
+    LoadedPreset lp;
+    lp.toml = *toml;
+    lp.options.size = *parsed;
+    lp.options.set = set;
+    lp.options.cache_dir = cache_dir(c);
+    return lp;
+}
+
 } // namespace pl::lab

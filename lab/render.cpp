@@ -26,16 +26,10 @@ double ms_since(Clock::time_point t) { return std::chrono::duration<double, std:
 
 int render(const RenderOptions& o, const CommonOptions& c) {
     auto t0 = Clock::now();
-    auto size = parse_size(o.size);
-    if (!size) return report(size.error());
-    auto toml = exec::resolve_preset(o.preset);
-    if (!toml) return report(toml.error());
-
-    exec::BuildOptions bo;
-    bo.size = *size;
-    bo.set = o.set;
-    bo.cache_dir = cache_dir(c);
-    auto built = exec::build_graph(*toml, bo);
+    auto lp = resolve_and_configure(o.preset, o.size, o.set, c);
+    if (!lp) return report(lp.error());
+    const auto toml = &lp->toml;
+    auto built = exec::build_graph(*toml, lp->options);
     if (!built) return report(built.error());
     double t_build = ms_since(t0);
 

@@ -58,14 +58,10 @@ class EventLog {
 } // namespace
 
 int run(const RunOptions& o, const CommonOptions& c) {
-    auto size = parse_size(o.size);
-    if (!size) return report(size.error());
-    auto toml = exec::resolve_preset(o.preset);
-    if (!toml) return report(toml.error());
-    exec::BuildOptions bo;
-    bo.size = *size;
-    bo.set = o.set;
-    bo.cache_dir = cache_dir(c);
+    auto lp = resolve_and_configure(o.preset, o.size, o.set, c);
+    if (!lp) return report(lp.error());
+    const auto toml = &lp->toml;
+    exec::BuildOptions& bo = lp->options;
     EventLog log(o.events);
 
     // The first build must succeed: there is no last good frame yet.

@@ -2,6 +2,7 @@
 // parses the command line and dispatches.
 #pragma once
 
+#include "exec/build.hpp"
 #include "util/error.hpp"
 
 #include <array>
@@ -78,5 +79,13 @@ int report(const Error& e);  // prints the error, returns its exit code
 [[noreturn]] void exit_after_hang(int code);
 std::string cache_dir(const CommonOptions& c);
 Result<std::optional<std::array<int, 2>>> parse_size(const std::string& s);
+
+// What every verb that renders starts with: resolve PRESET, apply --size and --set, build.
+struct LoadedPreset {
+    std::filesystem::path toml;
+    exec::BuildOptions options;  // kept for rebuilds (live reload)
+};
+Result<LoadedPreset> resolve_and_configure(const std::string& preset, const std::string& size,
+                                           const std::vector<std::string>& set, const CommonOptions& c);
 
 } // namespace pl::lab

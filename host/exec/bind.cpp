@@ -127,11 +127,7 @@ Status bind_pass(const graph::GraphDesc& desc, CompiledPass& cp) {
                 std::vector<std::string> names;
                 for (const auto& x : desc.buffers) names.push_back(x.name);
                 Error e = err("shader block '" + name + "' is not a buffer of the graph", name);
-                std::string near = nearest_name(name, names);
-                if (!near.empty()) e.hint = "did you mean '" + near + "'?";
-                std::string all;
-                for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
-                e.notes.push_back(names.empty() ? "the graph declares no [buffers]" : "buffers: " + all);
+                suggest(e, name, names, "buffers", "the graph declares no [buffers]");
                 return e;
             }
             br.kind = prev ? BoundResource::Kind::buffer_prev : BoundResource::Kind::buffer;
@@ -148,11 +144,7 @@ Status bind_pass(const graph::GraphDesc& desc, CompiledPass& cp) {
                     if (x.history) names.push_back(x.name + "_prev");
                 }
                 Error e = err("shader resource '" + name + "' is not an image of the graph", name);
-                std::string near = nearest_name(name, names);
-                if (!near.empty()) e.hint = "did you mean '" + near + "'?";
-                std::string all;
-                for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
-                e.notes.push_back(names.empty() ? "the graph declares no [images]" : "images: " + all);
+                suggest(e, name, names, "images", "the graph declares no [images]");
                 return e;
             }
             const vk::FormatInfo* fi = vk::find_format(img->format);

@@ -111,11 +111,7 @@ Status apply_param_value(std::vector<ParamDesc>& params, const std::string& name
         for (const auto& p : params) names.push_back(p.name);
         Error e = make_error("unknown param '" + name + "'", loc);
         e.resource = name;
-        std::string near = nearest_name(name, names);
-        if (!near.empty()) e.hint = "did you mean '" + near + "'?";
-        std::string all;
-        for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
-        e.notes.push_back(names.empty() ? "this preset has no params" : "params: " + all);
+        suggest(e, name, names, "params", "this preset has no params");
         return e;
     }
     ParamDesc& p = *it;
@@ -133,11 +129,7 @@ Status apply_param_value(std::vector<ParamDesc>& params, const std::string& name
             auto o = std::find(p.options.begin(), p.options.end(), *s);
             if (o == p.options.end()) {
                 Error e = bad("'" + *s + "' is not one of its options");
-                std::string all;
-                for (const auto& opt : p.options) all += (all.empty() ? "" : ", ") + opt;
-                e.notes.push_back("options: " + all);
-                std::string near = nearest_name(*s, p.options);
-                if (!near.empty()) e.hint = "did you mean '" + near + "'?";
+                suggest(e, *s, p.options, "options");
                 return e;
             }
             nums = {static_cast<double>(o - p.options.begin())};

@@ -2,6 +2,7 @@
 
 #include "scene/mesh.hpp"
 #include "vk/check.hpp"
+#include "vk/names.hpp"
 
 #include <algorithm>
 #include <map>
@@ -87,16 +88,6 @@ VkBlendOp blend_op(const std::string& s) {
     return VK_BLEND_OP_ADD;
 }
 
-VkCompareOp compare_op(const std::string& s) {
-    if (s == "never") return VK_COMPARE_OP_NEVER;
-    if (s == "less") return VK_COMPARE_OP_LESS;
-    if (s == "equal") return VK_COMPARE_OP_EQUAL;
-    if (s == "less_equal") return VK_COMPARE_OP_LESS_OR_EQUAL;
-    if (s == "greater") return VK_COMPARE_OP_GREATER;
-    if (s == "not_equal") return VK_COMPARE_OP_NOT_EQUAL;
-    if (s == "greater_equal") return VK_COMPARE_OP_GREATER_OR_EQUAL;
-    return VK_COMPARE_OP_ALWAYS;
-}
 
 VkStencilOp stencil_op(const std::string& s) {
     if (s == "zero") return VK_STENCIL_OP_ZERO;
@@ -110,7 +101,7 @@ VkStencilOp stencil_op(const std::string& s) {
 }
 
 VkStencilOpState stencil_face(const graph::StencilFaceDesc& f, const graph::StencilDesc& s) {
-    return {stencil_op(f.fail), stencil_op(f.pass), stencil_op(f.depth_fail), compare_op(f.compare),
+    return {stencil_op(f.fail), stencil_op(f.pass), stencil_op(f.depth_fail), vk::compare_op(f.compare),
             s.read_mask, s.write_mask, s.reference};
 }
 
@@ -294,7 +285,7 @@ Result<PassPipeline> create_pass_pipeline(vk::Context& ctx, const CompiledGraph&
     if (pd.depth) {
         ds.depthTestEnable = pd.depth->test != "off";
         ds.depthWriteEnable = pd.depth->write;
-        ds.depthCompareOp = pd.depth->test == "off" ? VK_COMPARE_OP_ALWAYS : compare_op(pd.depth->test);
+        ds.depthCompareOp = pd.depth->test == "off" ? VK_COMPARE_OP_ALWAYS : vk::compare_op(pd.depth->test);
     }
     if (pd.stencil.enable) {
         ds.stencilTestEnable = VK_TRUE;

@@ -426,11 +426,7 @@ Result<image::Image> Executor::read(const std::string& name, int mip, int layer)
         for (const auto& [n, gi] : res_.images) names.push_back(n);
         Error e = make_error("no image named '" + name + "' in the graph");
         e.resource = name;
-        std::string near = nearest_name(name, names);
-        if (!near.empty()) e.hint = "did you mean '" + near + "'?";
-        std::string all;
-        for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
-        e.notes.push_back("images: " + all);
+        suggest(e, name, names, "images");
         return e;
     }
     GraphImage& gi = it->second;

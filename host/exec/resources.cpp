@@ -6,6 +6,7 @@
 #include "image/image.hpp"
 #include "scene/mesh.hpp"
 #include "vk/check.hpp"
+#include "vk/names.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -30,16 +31,6 @@ VkSamplerAddressMode address_of(const std::string& s) {
     return VK_SAMPLER_ADDRESS_MODE_REPEAT;
 }
 
-VkCompareOp compare_of(const std::string& s) {
-    if (s == "never") return VK_COMPARE_OP_NEVER;
-    if (s == "less") return VK_COMPARE_OP_LESS;
-    if (s == "equal") return VK_COMPARE_OP_EQUAL;
-    if (s == "less_equal") return VK_COMPARE_OP_LESS_OR_EQUAL;
-    if (s == "greater") return VK_COMPARE_OP_GREATER;
-    if (s == "not_equal") return VK_COMPARE_OP_NOT_EQUAL;
-    if (s == "greater_equal") return VK_COMPARE_OP_GREATER_OR_EQUAL;
-    return VK_COMPARE_OP_ALWAYS;
-}
 
 vk::UniqueSampler make_sampler(vk::Context& ctx, const graph::SamplerDesc& s, bool integer) {
     // Integer formats cannot be filtered linearly.
@@ -62,7 +53,7 @@ vk::UniqueSampler make_sampler(vk::Context& ctx, const graph::SamplerDesc& s, bo
         .anisotropyEnable = aniso ? VK_TRUE : VK_FALSE,
         .maxAnisotropy = aniso ? std::min(s.anisotropy, ctx.features().max_anisotropy) : 1.0f,
         .compareEnable = s.compare.empty() ? VK_FALSE : VK_TRUE,
-        .compareOp = compare_of(s.compare),
+        .compareOp = vk::compare_op(s.compare),
         .minLod = s.min_lod,
         .maxLod = s.max_lod,
         .borderColor = border};

@@ -150,11 +150,7 @@ struct Parser {
             std::vector<std::string> known = {"view", "view.w", "view.h", "min", "max", "ceil_div"};
             for (const auto& [k, v] : env.params) known.push_back("params." + k);
             Error e = fail("unknown name '" + id + "'", at);
-            std::string near = nearest_name(id, known);
-            if (!near.empty()) e.hint = "did you mean '" + near + "'?";
-            std::string all;
-            for (const auto& k : known) all += (all.empty() ? "" : ", ") + k;
-            e.notes.push_back("names: " + all);
+            suggest(e, id, known, "names");
             err = e;
             return std::nullopt;
         }

@@ -137,11 +137,7 @@ Status TableReader::choice(const std::string& key, std::string& out, const std::
     if (!has(key)) return ok_status();
     if (std::find(allowed.begin(), allowed.end(), v) == allowed.end()) {
         Error e = error(what_ + ": '" + key + "' cannot be \"" + v + "\"", where);
-        std::string near = nearest_name(v, allowed);
-        if (!near.empty()) e.hint = "did you mean \"" + near + "\"?";
-        std::string all;
-        for (const auto& a : allowed) all += (all.empty() ? "" : ", ") + a;
-        e.notes.push_back("valid: " + all);
+        suggest(e, v, allowed, "valid", {}, '"');
         return e;
     }
     out = v;
@@ -155,11 +151,7 @@ Status TableReader::finish(const std::vector<std::string>& also_allowed) {
         std::string key(k.str());
         if (std::find(valid.begin(), valid.end(), key) != valid.end()) continue;
         Error e = error(what_ + ": unknown key '" + key + "'", key_loc(key));
-        std::string near = nearest_name(key, valid);
-        if (!near.empty()) e.hint = "did you mean '" + near + "'?";
-        std::string all;
-        for (const auto& a : valid) all += (all.empty() ? "" : ", ") + a;
-        e.notes.push_back("keys: " + all);
+        suggest(e, key, valid, "keys");
         return e;
     }
     return ok_status();

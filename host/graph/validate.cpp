@@ -20,11 +20,7 @@ Error ref_error(const std::string& what, const std::string& name, const SourceLo
     Error e = make_error(what + " '" + name + "' does not exist", loc);
     e.pass = pass;
     e.resource = name;
-    std::string near = nearest_name(name, valid);
-    if (!near.empty()) e.hint = "did you mean '" + near + "'?";
-    std::string all;
-    for (const auto& v : valid) all += (all.empty() ? "" : ", ") + v;
-    e.notes.push_back(valid.empty() ? "none are declared" : "declared: " + all);
+    suggest(e, name, valid, "declared", "none are declared");
     return e;
 }
 
@@ -85,11 +81,7 @@ Status validate_graph(GraphDesc& g, const ValidateOptions& opt) {
         const vk::FormatInfo* f = vk::find_format(i.format);
         if (!f) {
             Error e = err("unknown format '" + i.format + "'", i.format_loc);
-            std::string near = nearest_name(i.format, format_names);
-            if (!near.empty()) e.hint = "did you mean '" + near + "'?";
-            std::string all;
-            for (const auto& n : format_names) all += (all.empty() ? "" : ", ") + n;
-            e.notes.push_back("formats: " + all);
+            suggest(e, i.format, format_names, "formats");
             return e;
         }
         if (!i.file.empty() && !i.generator.empty()) return err("has both file and generator; choose one", i.loc);

@@ -1,4 +1,5 @@
 #include "shader/bindings.hpp"
+#include "shader/spirv_words.hpp"
 
 #include <map>
 #include <set>
@@ -13,16 +14,6 @@ struct Decorated {
     size_t binding_word = 0;  // index of the Binding operand in the module's words
 };
 
-std::string spv_string(const std::vector<uint32_t>& w, size_t i, size_t end) {
-    std::string s;
-    for (; i < end; ++i)
-        for (int b = 0; b < 4; ++b) {
-            char c = static_cast<char>((w[i] >> (8 * b)) & 0xff);
-            if (!c) return s;
-            s += c;
-        }
-    return s;
-}
 
 // Every variable with a Binding decoration, named by its OpName or, for nameless block
 // instances, by its block type's name (as reflection names them).
@@ -33,7 +24,7 @@ std::vector<Decorated> decorated(const std::vector<uint32_t>& w) {
     for (size_t i = 5; i < w.size();) {
         uint32_t op = w[i] & 0xffff, len = w[i] >> 16;
         if (len == 0 || i + len > w.size()) break;
-        if (op == 5) names[w[i + 1]] = spv_string(w, i + 2, i + len);               // OpName
+        if (op == 5) names[w[i + 1]] = spirv_string(w, i + 2, i + len);               // OpName
         if (op == 71 && len >= 4 && w[i + 2] == 33) binding_at[w[i + 1]] = i + 3;    // Binding
         if (op == 71 && len >= 4 && w[i + 2] == 34) set_of[w[i + 1]] = w[i + 3];     // DescriptorSet
         if (op == 32 && len >= 4) pointee_of[w[i + 1]] = w[i + 3];                    // OpTypePointer

@@ -1,6 +1,7 @@
 // A small SPIR-V reflector: enough of the module's types, names and decorations to bind
 // resources by name, size push constants, read the compute local size and measure private memory.
 #include "shader/program.hpp"
+#include "shader/spirv_words.hpp"
 
 #include <algorithm>
 #include <array>
@@ -43,16 +44,6 @@ struct Module {
     std::optional<std::array<uint32_t, 3>> local_size_ids;
 };
 
-std::string str_at(const std::vector<uint32_t>& w, size_t i, size_t end) {
-    std::string s;
-    for (; i < end; ++i)
-        for (int b = 0; b < 4; ++b) {
-            char c = static_cast<char>((w[i] >> (8 * b)) & 0xff);
-            if (!c) return s;
-            s += c;
-        }
-    return s;
-}
 
 Result<Module> parse(const std::vector<uint32_t>& w) {
     if (w.size() < 5 || w[0] != 0x07230203u) return make_error("not a SPIR-V module");
@@ -62,7 +53,7 @@ Result<Module> parse(const std::vector<uint32_t>& w) {
         if (len == 0 || i + len > w.size()) return make_error("malformed SPIR-V module");
         auto a = [&](size_t k) { return w[i + k]; };
         switch (op) {
-        case OpName: m.names[a(1)] = str_at(w, i + 2, i + len); break;
+        case OpName: m.names[a(1)] = spirv_string(w, i + 2, i + len); break;
         case OpExecutionMode:
             if (a(2) == ModeLocalSize) m.local_size[0] = a(3), m.local_size[1] = a(4), m.local_size[2] = a(5);
             break;

@@ -93,4 +93,18 @@ std::string nearest_name(const std::string& wanted, const std::vector<std::strin
     return best_d <= limit ? best : std::string{};
 }
 
+void suggest(Error& e, const std::string& wanted, const std::vector<std::string>& candidates, const std::string& label,
+             const std::string& empty_note, char quote) {
+    std::string near = nearest_name(wanted, candidates);
+    if (!near.empty()) e.hint = std::string("did you mean ") + quote + near + quote + "?";
+    if (label.empty()) return;
+    if (candidates.empty()) {
+        if (!empty_note.empty()) e.notes.push_back(empty_note);
+        return;
+    }
+    std::string all;
+    for (const auto& c : candidates) all += (all.empty() ? "" : ", ") + c;
+    e.notes.push_back(label + ": " + all);
+}
+
 } // namespace pl

@@ -81,5 +81,9 @@ inline Status ok_status() { return Ok{}; }
 int edit_distance(const std::string& a, const std::string& b);
 // Returns the closest candidate within a reasonable distance, or "" if none is close.
 std::string nearest_name(const std::string& wanted, const std::vector<std::string>& candidates);
+// Adds "did you mean 'x'?" (when one is close) and, when `label` is given, a note listing every
+// candidate ("label: a, b, c", or `empty_note` when there are none).
+void suggest(Error& e, const std::string& wanted, const std::vector<std::string>& candidates,
+             const std::string& label = {}, const std::string& empty_note = {}, char quote = '\'');
 
 } // namespace pl
