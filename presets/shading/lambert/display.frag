@@ -1,0 +1,6 @@
+#version 450
+// Linear HDR radiance to the sRGB output (clamped; the hardware encodes sRGB on store).
+layout(location = 0) in vec2 uv;
+layout(location = 0) out vec4 color;
+uniform sampler2D hdr;
+void main() { color = vec4(clamp(texture(hdr, uv).rgb, 0.0, 1.0), 1.0); }
