@@ -7,12 +7,16 @@
 
 #include "exec/build.hpp"
 #include "exec/executor.hpp"
+#include "image/image.hpp"
+#include "scene/camera.hpp"
 #include "reload/watcher.hpp"
 #include "window.hpp"
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -90,15 +94,34 @@ int run(const RunOptions& o, const CommonOptions& c) {
     std::unique_ptr<exec::Executor> current = std::move(ex.value());
     log.write("started", "\"preset\":" + json_string(toml->string()));
 
-    auto start = std::chrono::steady_clock::now();
-    auto last = start;
-    int frame = 0;
+    auto last = std::chrono::steady_clock::now();
+    double sim_time = o.time;  // the frame clock: advances unless paused (space), steps with ->
+    bool paused = false;
+    graph::OrbitCamera camera = current->graph().desc.view.orbit;
+    glm::vec4 mouse(0.0f);
+    int frame = 0, screenshots = 0;
     bool broken = false;
+    double elapsed = 0;
+    std::fprintf(stderr, "passlab: drag to orbit, wheel to zoom, space pause, -> step, F12 screenshot, Esc quit\n");
     while (!(*window)->should_close()) {
         (*window)->poll();
         auto now = std::chrono::steady_clock::now();
-        double elapsed = std::chrono::duration<double>(now - start).count();
+        double dt = std::chrono::duration<double>(now - last).count();
+        last = now;
+        elapsed += dt;
         if (o.seconds > 0 && elapsed >= o.seconds) break;
+
+        // Input: orbit camera, Shadertoy iMouse (xy while the button is down, zw = click
+        // position, negative once released), time controls, screenshots.
+        WindowInput input = (*window)->take_input();
+        camera.yaw -= static_cast<float>(input.drag_dx) * 0.3f;
+        camera.pitch = std::clamp(camera.pitch + static_cast<float>(input.drag_dy) * 0.3f, -89.0f, 89.0f);
+        camera.distance = std::clamp(camera.distance * static_cast<float>(std::pow(0.9, input.scroll)), 0.01f, 1e4f);
+        if (input.left) mouse = glm::vec4(input.x, input.y, input.click_x, input.click_y);
+        else mouse = glm::vec4(mouse.x, mouse.y, -std::fabs(mouse.z), -std::fabs(mouse.w));
+        if (input.pause_toggled) paused = !paused;
+        double delta = paused ? (input.step ? 1.0 / 60.0 : 0.0) : dt;
+        sim_time += delta;
         if (o.frames > 0 && frame >= o.frames) break;
 
         // Reload: collect a burst of changes, rebuild, swap only when everything built.
@@ -137,15 +160,25 @@ int run(const RunOptions& o, const CommonOptions& c) {
 
         exec::FrameInput in;
         in.index = frame;
-        in.time = o.time + elapsed;
-        in.delta = std::chrono::duration<double>(now - last).count();
-        last = now;
+        in.time = sim_time;
+        in.delta = delta;
+        in.camera = camera;
+        in.mouse = mouse;
         if (auto s = current->render(in); !s) {
             int rc = report(s.error());
             if ((*ctx)->hung()) exit_after_hang(rc);
             return rc;
         }
         std::string output = current->graph().desc.output;
+        if (input.screenshot) {
+            // Never overwrite: the first free passlab-screenshot-N.png in the working folder.
+            fs::path file;
+            do file = "passlab-screenshot-" + std::to_string(++screenshots) + ".png";
+            while (fs::exists(file));
+            auto img = current->read(output);
+            if (img && image::save_image(*img, file)) std::fprintf(stderr, "passlab: screenshot %s\n", file.string().c_str());
+            else std::fprintf(stderr, "passlab: screenshot failed\n");
+        }
         auto presented = (*window)->present([&](VkCommandBuffer cb, VkImage dst, VkExtent2D ext) {
             return current->record_blit_to(cb, output, dst, ext);
         });

@@ -37,6 +37,36 @@ Result<std::unique_ptr<Window>> Window::create(vk::Context& ctx, int width, int 
         e.code = ExitCode::environment;
         return e;
     }
+    glfwSetWindowUserPointer(w->window_, w.get());
+    glfwSetCursorPosCallback(w->window_, [](GLFWwindow* gw, double x, double y) {
+        auto* self = static_cast<Window*>(glfwGetWindowUserPointer(gw));
+        // Window coordinates to framebuffer pixels (HiDPI scales differ).
+        int ww, wh, fw, fh;
+        glfwGetWindowSize(gw, &ww, &wh);
+        glfwGetFramebufferSize(gw, &fw, &fh);
+        double sx = ww > 0 ? double(fw) / ww : 1.0, sy = wh > 0 ? double(fh) / wh : 1.0;
+        WindowInput& in = self->input();
+        if (in.left) in.drag_dx += x * sx - in.x, in.drag_dy += y * sy - in.y;
+        in.x = x * sx;
+        in.y = y * sy;
+    });
+    glfwSetMouseButtonCallback(w->window_, [](GLFWwindow* gw, int button, int action, int) {
+        WindowInput& in = static_cast<Window*>(glfwGetWindowUserPointer(gw))->input();
+        if (button != GLFW_MOUSE_BUTTON_LEFT) return;
+        in.left = action == GLFW_PRESS;
+        if (in.left) in.click_x = in.x, in.click_y = in.y;
+    });
+    glfwSetScrollCallback(w->window_, [](GLFWwindow* gw, double, double dy) {
+        static_cast<Window*>(glfwGetWindowUserPointer(gw))->input().scroll += dy;
+    });
+    glfwSetKeyCallback(w->window_, [](GLFWwindow* gw, int key, int, int action, int) {
+        if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+        WindowInput& in = static_cast<Window*>(glfwGetWindowUserPointer(gw))->input();
+        if (key == GLFW_KEY_SPACE && action == GLFW_PRESS) in.pause_toggled = true;
+        if (key == GLFW_KEY_RIGHT) in.step = true;
+        if (key == GLFW_KEY_F12 && action == GLFW_PRESS) in.screenshot = true;
+        if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(gw, GLFW_TRUE);
+    });
     if (glfwCreateWindowSurface(ctx.instance(), w->window_, nullptr, &w->surface_) != VK_SUCCESS) {
         Error e = make_error("cannot create a Vulkan surface for the window");
         e.code = ExitCode::environment;
@@ -141,6 +171,13 @@ Status Window::create_swapchain() {
 bool Window::should_close() const { return glfwWindowShouldClose(window_); }
 void Window::poll() { glfwPollEvents(); }
 void Window::set_title(const std::string& t) { glfwSetWindowTitle(window_, t.c_str()); }
+
+WindowInput Window::take_input() {
+    WindowInput out = input_;
+    input_.drag_dx = input_.drag_dy = input_.scroll = 0;
+    input_.pause_toggled = input_.step = input_.screenshot = false;
+    return out;
+}
 
 Status Window::present(const std::function<Status(VkCommandBuffer, VkImage, VkExtent2D)>& record) {
     if (!swapchain_) {
