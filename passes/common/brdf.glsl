@@ -11,4 +11,12 @@ const float kPi = 3.14159265358979;
 // hemisphere integral of f_r cos(theta) exactly c_d: an albedo of 1 reflects all it receives.
 vec3 brdf_lambert(vec3 albedo) { return albedo / kPi; }
 
+// Normalised Blinn-Phong specular lobe (000_c9f7e5de708ecbb3.txt L1008-1011, 002 L48-78):
+//     f_spec = (m + 8) / (8 pi) * c_s * (n.h)^m,   h = normalize(v + l)
+// The factor keeps the lobe's energy roughly constant as m grows; it is an approximation (the
+// directional albedo at normal view is 1.024, 1.075, 1.027, 1.004 for m = 1, 8, 64, 512).
+float blinn_phong_normalized(vec3 n, vec3 h, float m) {
+    return (m + 8.0) / (8.0 * kPi) * pow(max(dot(n, h), 0.0), m);
+}
+
 #endif
