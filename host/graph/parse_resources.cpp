@@ -24,7 +24,13 @@ const std::set<std::string> kGlslKeywords = {
     "float", "double", "int", "void", "bool", "true", "false", "discard", "return", "struct", "vec2", "vec3",
     "vec4", "ivec2", "ivec3", "ivec4", "bvec2", "bvec3", "bvec4", "uint", "uvec2", "uvec3", "uvec4", "mat2",
     "mat3", "mat4", "sampler2D", "precision", "highp", "mediump", "lowp", "invariant", "coherent", "volatile",
-    "restrict", "readonly", "writeonly", "patch", "sample", "subroutine", "frame", "params", "main"};
+    "restrict", "readonly", "writeonly", "patch", "sample", "subroutine", "frame", "params", "main",
+    // Reserved for future use by GLSL 4.50 (glslang rejects them as identifiers).
+    "common", "partition", "active", "asm", "class", "union", "enum", "typedef", "template", "this",
+    "resource", "goto", "inline", "noinline", "public", "static", "extern", "external", "interface",
+    "long", "short", "half", "fixed", "unsigned", "superp", "input", "output", "hvec2", "hvec3",
+    "hvec4", "fvec2", "fvec3", "fvec4", "filter", "sizeof", "cast", "namespace", "using",
+    "precise", "texture", "dmat2", "dmat3", "dmat4"};
 
 Status check_name(const TableReader& r, const std::string& key, const char* what) {
     if (!is_identifier(key))
