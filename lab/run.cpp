@@ -145,7 +145,10 @@ int run(const RunOptions& o, const CommonOptions& c) {
                 broken = true;
                 if ((*ctx)->hung()) exit_after_hang(1);
             } else {
-                current = std::move(next_ex.value());  // the old executor waits for its GPU work
+                // The old executor is retired, not destroyed: it goes once the GPU work submitted
+                // so far has finished (Context::collect after the next frame's fence).
+                (*ctx)->retire(std::move(current));
+                current = std::move(next_ex.value());
                 watcher.watch(current->graph().dependencies);
                 std::string passes;
                 for (const auto& p : current->graph().passes) passes += (passes.empty() ? "" : ",") + json_string(p.desc->name);
