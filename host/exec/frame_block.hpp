@@ -36,8 +36,8 @@ static_assert(offsetof(FrameBlock, time) == 512);
 static_assert(offsetof(FrameBlock, index) == 520);
 static_assert(sizeof(FrameBlock) == 528);
 
-inline constexpr uint32_t kFrameBinding = 0;   // set 0
-inline constexpr uint32_t kParamsBinding = 1;  // set 0
+// The blocks carry explicit bindings (frame 0, params 1 in set 0) only so that user resources
+// auto-mapped around them never collide; the host binds them by block name like everything else.
 
 // Mirrors FrameBlock member for member; std140 gives the offsets asserted above.
 inline constexpr const char* kFrameBlockGlsl = R"(layout(set = 0, binding = 0, std140) uniform PasslabFrame {
