@@ -1,3 +1,5 @@
+// Look-ups over the graph description. Linear searches: graphs have tens of entries, and the
+// vectors keep declaration order (UI order, std140 order) which a map would lose.
 #include "graph/desc.hpp"
 
 namespace pl::graph {
@@ -9,6 +11,11 @@ template <class V> auto* find_named(const V& v, const std::string& n) {
     return static_cast<const typename V::value_type*>(nullptr);
 }
 } // namespace
+
+SourceLoc KeyLocs::at(const std::string& key, const SourceLoc& fallback) const {
+    auto it = map.find(key);
+    return it != map.end() && it->second.known() ? it->second : fallback;
+}
 
 const ImageDesc* GraphDesc::find_image(const std::string& n) const { return find_named(images, n); }
 const BufferDesc* GraphDesc::find_buffer(const std::string& n) const { return find_named(buffers, n); }
@@ -23,8 +30,12 @@ int ParamDesc::components() const {
     case ParamType::color3: return 3;
     case ParamType::vec4:
     case ParamType::color4: return 4;
-    default: return 1;
+    case ParamType::f32:
+    case ParamType::i32:
+    case ParamType::boolean:
+    case ParamType::enumeration: return 1;
     }
+    return 1;
 }
 
 } // namespace pl::graph

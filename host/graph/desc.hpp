@@ -27,6 +27,16 @@ struct SizeExpr {
     bool empty() const { return text.empty() && literal.empty(); }
 };
 
+// Where the value of each key of a table was written, so that a check made after parsing (a
+// reference to an image, a shader file, a size) points at the offending value rather than at the
+// start of the table. The parser records every key it reads; nested keys are dotted
+// ("depth.image", "set.gain").
+struct KeyLocs {
+    std::map<std::string, SourceLoc> map;
+    // The value's location, or `fallback` when the key was not written.
+    SourceLoc at(const std::string& key, const SourceLoc& fallback) const;
+};
+
 enum class ImageKind { tex2d, tex2d_array, tex3d, cube };
 
 struct SamplerDesc {
@@ -60,6 +70,7 @@ struct ImageDesc {
     std::map<std::string, std::vector<double>> generator_args;  // e.g. cells=[8], color_a=[...]
     std::optional<std::array<float, 4>> clear;  // cleared at the start of every frame
     SamplerDesc sampler;
+    KeyLocs keys;  // value locations: "alias", "file", "generator", "samples", "mips", ...
 };
 
 struct BufferDesc {
@@ -71,6 +82,7 @@ struct BufferDesc {
     std::vector<double> data;       // initial contents ...
     std::string data_type = "float";  // ... as float | int | uint 32-bit values
     bool history = false;
+    KeyLocs keys;
 };
 
 struct MeshDesc {
@@ -80,6 +92,7 @@ struct MeshDesc {
     std::string file;       // .obj or .gltf/.glb relative to the preset
     std::map<std::string, double> args;  // generator arguments: segments, radius, tube ...
     int instances = 1;
+    KeyLocs keys;
 };
 
 enum class ParamType { f32, i32, boolean, vec2, vec3, vec4, color3, color4, enumeration };
@@ -93,6 +106,7 @@ struct ParamDesc {
     bool log = false;  // UI slider in log scale
     std::vector<std::string> options;  // enum values; shader sees NAME_OPTION defines
     std::string doc;
+    KeyLocs keys;  // "value", "min", "max", ...
     int components() const;  // 1..4
 };
 
@@ -113,6 +127,7 @@ struct AttachmentRef {
     int layer = 0;
     std::string resolve;  // MSAA: single-sample image to resolve into
     SourceLoc loc;
+    SourceLoc resolve_loc;  // where `resolve` is written
 };
 
 struct StencilFaceDesc {
@@ -200,6 +215,7 @@ struct PassDesc {
     std::string filter = "linear";     // blit filter
 
     bool enabled = true;
+    KeyLocs keys;  // "mesh", "indirect", "src", "dst", "image", "groups", "kind", ...
 };
 
 struct OrbitCamera {
@@ -246,6 +262,7 @@ struct TestDesc {
     std::map<std::string, double> tolerance;
     std::vector<CheckDesc> checks;     // probes and properties
     std::vector<std::string> requires_features;
+    KeyLocs keys;  // "pass", "size", "set.NAME", ...
 };
 
 // What a pass reads and writes, by resource name (known after shader reflection); used by the

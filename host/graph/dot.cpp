@@ -5,29 +5,97 @@
 
 namespace pl::graph {
 
+namespace {
+
+// A double-quoted dot ID: quotes and backslashes escaped, newlines as \n.
+std::string q(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (c == '\n') {
+            out += "\\n";
+            continue;
+        }
+        out += c;
+    }
+    return out + "\"";
+}
+
+std::string size_text(const SizeExpr& e) {
+    if (!e.text.empty()) return e.text;
+    std::string s;
+    for (int64_t v : e.literal) s += (s.empty() ? "" : "x") + std::to_string(v);
+    return s;
+}
+
+const char* kind_name(PassKind k) {
+    switch (k) {
+    case PassKind::fullscreen: return "fullscreen";
+    case PassKind::draw: return "draw";
+    case PassKind::compute: return "compute";
+    case PassKind::blit: return "blit";
+    case PassKind::mips: return "mips";
+    case PassKind::clear: return "clear";
+    case PassKind::copy: return "copy";
+    }
+    return "?";
+}
+
+} // namespace
+
 std::string to_dot(const GraphDesc& g, const std::vector<PassIO>* io) {
     std::ostringstream s;
-    s << "digraph \"" << (g.meta.title.empty() ? g.dir.filename().string() : g.meta.title) << "\" {\n";
-    s << "  rankdir=LR;\n  node [fontname=\"Helvetica\"];\n";
-    for (const auto& i : g.images)
-        s << "  \"" << i.name << "\" [shape=ellipse" << (i.history ? ", style=dashed" : "") << ", label=\"" << i.name
-          << "\\n" << (i.alias.empty() ? i.format : "alias of " + i.alias) << "\"];\n";
-    for (const auto& b : g.buffers) s << "  \"" << b.name << "\" [shape=cylinder];\n";
+    std::string title = g.meta.title.empty() ? g.dir.filename().string() : g.meta.title;
+    s << "digraph " << q(title) << " {\n";
+    s << "  rankdir=LR;\n  node [fontname=\"Helvetica\", fontsize=10];\n  edge [fontname=\"Helvetica\", fontsize=9];\n";
+    std::set<std::string> declared;
+    for (const auto& i : g.images) {
+        declared.insert(i.name);
+        std::string label = i.name + "\n";
+        if (!i.alias.empty()) label += "alias of " + i.alias;
+        else if (!i.file.empty()) label += i.file;
+        else label += i.format + (i.size.empty() ? std::string(i.generator.empty() ? " view" : "") : " " + size_text(i.size));
+        if (!i.generator.empty()) label += "\n" + i.generator;
+        s << "  " << q(i.name) << " [shape=ellipse, label=" << q(label) << (i.history ? ", style=dashed" : "")
+          << (i.name == g.output ? ", peripheries=2" : "") << "];\n";
+    }
+    for (const auto& b : g.buffers) {
+        declared.insert(b.name);
+        std::string label = b.name + "\nbuffer " + size_text(b.size) + " B";
+        s << "  " << q(b.name) << " [shape=ellipse, label=" << q(label) << ", style=" << (b.history ? "\"dashed,filled\"" : "filled")
+          << ", fillcolor=\"#f3f3f3\"];\n";
+    }
     for (size_t k = 0; k < g.passes.size(); ++k) {
         const PassDesc& p = g.passes[k];
-        s << "  \"pass:" << p.name << "\" [shape=box, style=filled, fillcolor=\"#dde8ff\", label=\"" << p.name << "\"];\n";
+        std::string pid = "pass:" + p.name;
+        s << "  " << q(pid) << " [shape=box, label=" << q(p.name + "\n" + kind_name(p.kind))
+          << (p.enabled ? ", style=filled, fillcolor=\"#dde8ff\"" : ", style=dashed, fontcolor=gray") << "];\n";
         std::set<std::string> reads, writes;
-        for (const auto& t : p.targets) writes.insert(t.image);
-        if (p.depth) (p.depth->write ? writes : reads).insert(p.depth->target.image);
-        if (!p.dst.empty()) writes.insert(p.dst);
-        if (!p.src.empty()) reads.insert(p.src);
-        if (!p.image.empty()) writes.insert(p.image);
-        if (io && k < io->size()) {
-            for (const auto& r : (*io)[k].reads) reads.insert(r);
-            for (const auto& w : (*io)[k].writes) writes.insert(w);
+        for (const auto& t : p.targets) {
+            writes.insert(t.image);
+            if (!t.resolve.empty()) writes.insert(t.resolve);
         }
-        for (const auto& r : reads) s << "  \"" << r << "\" -> \"pass:" << p.name << "\";\n";
-        for (const auto& w : writes) s << "  \"pass:" << p.name << "\" -> \"" << w << "\";\n";
+        if (p.depth) {
+            if (p.depth->test != "off") reads.insert(p.depth->target.image);
+            if (p.depth->write) writes.insert(p.depth->target.image);
+        }
+        if (!p.src.empty()) reads.insert(p.src);
+        if (!p.dst.empty()) writes.insert(p.dst);
+        if (!p.image.empty()) writes.insert(p.image);
+        if (!p.indirect.empty()) reads.insert(p.indirect);
+        if (io && k < io->size()) {
+            reads.insert((*io)[k].reads.begin(), (*io)[k].reads.end());
+            writes.insert((*io)[k].writes.begin(), (*io)[k].writes.end());
+        }
+        for (const auto& r : reads) {
+            if (declared.count(r)) {
+                s << "  " << q(r) << " -> " << q(pid) << ";\n";
+            } else if (r.size() > 5 && r.compare(r.size() - 5, 5, "_prev") == 0 && declared.count(r.substr(0, r.size() - 5))) {
+                s << "  " << q(r.substr(0, r.size() - 5)) << " -> " << q(pid) << " [style=dashed, label=\"prev\"];\n";
+            }
+        }
+        for (const auto& w : writes)
+            if (declared.count(w)) s << "  " << q(pid) << " -> " << q(w) << ";\n";
     }
     s << "}\n";
     return s.str();

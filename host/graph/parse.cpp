@@ -1,18 +1,29 @@
 // preset.toml -> GraphDesc. Sections: [preset] [view] [params] [images] [buffers] [meshes]
-// [[pass]] [output] [[test]]; every key is checked (unknown keys are errors, not ignored).
+// [[pass]] [output] [[test]]; every key is checked (an unknown key is an error, not ignored: a
+// typo such as `fromat` must not silently fall back to a default).
 #include "graph/parse.hpp"
 
 #include "graph/parse_parts.hpp"
-#include "graph/toml_reader.hpp"
 
 #include <algorithm>
 #include <fstream>
-#include <tuple>
 #include <sstream>
+#include <tuple>
 
 namespace fs = std::filesystem;
 
 namespace pl::graph {
+
+Status parse_orbit(TableReader& r, OrbitCamera& o) {
+    std::vector<double> target;
+    if (auto s = r.numbers("target", target, 3, 3); !s) return s;
+    if (!target.empty()) o.target = {float(target[0]), float(target[1]), float(target[2])};
+    if (auto s = r.floats("distance", o.distance); !s) return s;
+    if (auto s = r.floats("yaw", o.yaw); !s) return s;
+    if (auto s = r.floats("pitch", o.pitch); !s) return s;
+    if (!(o.distance > 0)) return r.error(r.what() + ": distance must be > 0", r.value_loc("distance"));
+    return r.finish();
+}
 
 namespace {
 
@@ -25,34 +36,33 @@ Status parse_preset(const toml::table& t, const std::string& file, GraphDesc& g)
     return r.finish();
 }
 
-Status parse_orbit(TableReader& r, OrbitCamera& o) {
-    std::vector<double> target;
-    if (auto s = r.numbers("target", target, 3, 3); !s) return s;
-    if (!target.empty()) o.target = {float(target[0]), float(target[1]), float(target[2])};
-    if (auto s = r.floats("distance", o.distance); !s) return s;
-    if (auto s = r.floats("yaw", o.yaw); !s) return s;
-    if (auto s = r.floats("pitch", o.pitch); !s) return s;
-    if (o.distance <= 0) return r.error("camera distance must be > 0", r.key_loc("distance"));
-    return r.finish();
+// [w, h] of integers in 1..16384: the view and test sizes.
+Status view_size(TableReader& r, const std::string& key, std::optional<std::array<int, 2>>& out) {
+    std::vector<int64_t> size;
+    if (auto s = r.integers(key, size, 2, 2); !s) return s;
+    if (size.empty()) return ok_status();
+    if (size[0] < 1 || size[1] < 1 || size[0] > 16384 || size[1] > 16384)
+        return r.error(r.what() + ": size " + std::to_string(size[0]) + "x" + std::to_string(size[1]) +
+                           " is outside 1x1 .. 16384x16384",
+                       r.value_loc(key));
+    out = std::array<int, 2>{int(size[0]), int(size[1])};
+    return ok_status();
 }
 
 Status parse_view(const toml::table& t, const std::string& file, GraphDesc& g) {
     TableReader r(t, file, "[view]");
     g.view.loc = r.loc();
-    std::vector<double> size;
-    if (auto s = r.numbers("size", size, 2, 2); !s) return s;
-    if (!size.empty()) {
-        if (size[0] < 1 || size[1] < 1 || size[0] > 16384 || size[1] > 16384)
-            return r.error("[view] size must be between 1x1 and 16384x16384", r.key_loc("size"));
-        g.view.size = {int(size[0]), int(size[1])};
-    }
-    if (const toml::node* cam = r.get("camera")) {
-        const toml::table* ct = cam->as_table();
-        if (!ct) return r.type_error("camera", "a table");
-        TableReader c(*ct, file, "[view].camera");
-        if (const toml::node* orbit = c.get("orbit")) {
-            if (!orbit->as_table()) return c.type_error("orbit", "a table");
-            TableReader o(*orbit->as_table(), file, "camera.orbit");
+    std::optional<std::array<int, 2>> size;
+    if (auto s = view_size(r, "size", size); !s) return s;
+    if (size) g.view.size = *size;
+    auto cam = r.table("camera");
+    if (!cam) return cam.error();
+    if (*cam) {
+        TableReader c(**cam, file, "[view].camera");
+        auto orbit = c.table("orbit");
+        if (!orbit) return orbit.error();
+        if (*orbit) {
+            TableReader o(**orbit, file, "camera.orbit");
             if (auto s = parse_orbit(o, g.view.orbit); !s) return s;
         }
         if (auto s = c.floats("fov", g.view.fov); !s) return s;
@@ -60,6 +70,10 @@ Status parse_view(const toml::table& t, const std::string& file, GraphDesc& g) {
         if (auto s = c.floats("far", g.view.far); !s) return s;
         if (auto s = c.boolean("ortho", g.view.ortho); !s) return s;
         if (auto s = c.floats("ortho_height", g.view.ortho_height); !s) return s;
+        if (!(g.view.fov > 0 && g.view.fov < 180)) return c.error("camera: fov must be between 0 and 180 degrees", c.value_loc("fov"));
+        if (!(g.view.near > 0)) return c.error("camera: near must be > 0", c.value_loc("near"));
+        if (!(g.view.far > g.view.near)) return c.error("camera: far must be greater than near", c.value_loc("far"));
+        if (!(g.view.ortho_height > 0)) return c.error("camera: ortho_height must be > 0", c.value_loc("ortho_height"));
         if (auto s = c.finish(); !s) return s;
     }
     return r.finish();
@@ -68,6 +82,7 @@ Status parse_view(const toml::table& t, const std::string& file, GraphDesc& g) {
 Status parse_output(const toml::table& t, const std::string& file, GraphDesc& g) {
     TableReader r(t, file, "[output]");
     if (auto s = r.str("image", g.output, &g.output_loc); !s) return s;
+    if (r.has("image") && g.output.empty()) return r.error("[output]: image must name an image", g.output_loc);
     return r.finish();
 }
 
@@ -75,13 +90,16 @@ Status parse_output(const toml::table& t, const std::string& file, GraphDesc& g)
 
 Result<GraphDesc> parse_graph_text(std::string_view text_in, const fs::path& as_file) {
     std::string text(text_in);
-    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 BOM: accepted
+    // Editors on Windows write a UTF-8 byte-order mark. toml++ 3.3 skips it too, but stripping it
+    // here keeps it out of the source lines quoted in errors and does not depend on the parser.
+    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
     GraphDesc g;
     g.file = fs::absolute(as_file);
     g.dir = g.file.parent_path();
+    // Messages name the file as the user would type it: relative to the working directory.
     std::error_code ec;
     std::string file = fs::proximate(as_file, ec).string();
-    if (ec) file = as_file.string();
+    if (ec || file.empty()) file = as_file.string();
     toml::table root;
     try {
         root = toml::parse(text, file);
@@ -89,17 +107,23 @@ Result<GraphDesc> parse_graph_text(std::string_view text_in, const fs::path& as_
         const auto& s = err.source();
         Error e = make_error("invalid TOML: " + std::string(err.description()),
                              {file, static_cast<int>(s.begin.line), static_cast<int>(s.begin.column)});
-        // The BOM-stripped text is what was parsed; read the line from it, not the file.
+        // The text parsed may not be the file on disk (BOM stripped, or parse_graph_text on a
+        // string): take the offending line from the text itself.
+        e.source_line.clear();
         std::istringstream in(text);
         std::string line;
         for (int n = 1; std::getline(in, line); ++n)
             if (n == static_cast<int>(s.begin.line)) {
                 if (!line.empty() && line.back() == '\r') line.pop_back();
                 e.source_line = line;
+                break;
             }
         return e;
     }
     TableReader top(root, file, "preset.toml");
+    // Unknown sections first: a misspelt [imgaes] is the cause of whatever else would fail.
+    if (auto s = top.finish({"preset", "view", "params", "images", "buffers", "meshes", "output", "pass", "test"}); !s)
+        return s.error();  // e.g. [[passes]]: "did you mean 'pass'?"
     auto section = [&](const char* key, auto&& fn) -> Status {
         const toml::node* n = top.get(key);
         if (!n) return ok_status();
@@ -107,13 +131,6 @@ Result<GraphDesc> parse_graph_text(std::string_view text_in, const fs::path& as_
         if (!t) return top.type_error(key, "a table ([" + std::string(key) + "])");
         return fn(*t);
     };
-    if (auto s = section("preset", [&](const toml::table& t) { return parse_preset(t, file, g); }); !s) return s.error();
-    if (auto s = section("view", [&](const toml::table& t) { return parse_view(t, file, g); }); !s) return s.error();
-    if (auto s = section("params", [&](const toml::table& t) { return parse_params(t, file, g); }); !s) return s.error();
-    if (auto s = section("images", [&](const toml::table& t) { return parse_images(t, file, g); }); !s) return s.error();
-    if (auto s = section("buffers", [&](const toml::table& t) { return parse_buffers(t, file, g); }); !s) return s.error();
-    if (auto s = section("meshes", [&](const toml::table& t) { return parse_meshes(t, file, g); }); !s) return s.error();
-    if (auto s = section("output", [&](const toml::table& t) { return parse_output(t, file, g); }); !s) return s.error();
     auto array_of_tables = [&](const char* key, auto&& fn) -> Status {
         const toml::node* n = top.get(key);
         if (!n) return ok_status();
@@ -123,9 +140,18 @@ Result<GraphDesc> parse_graph_text(std::string_view text_in, const fs::path& as_
             if (auto s = fn(*e.as_table()); !s) return s;
         return ok_status();
     };
-    if (auto s = array_of_tables("pass", [&](const toml::table& t) { return parse_pass(t, file, g); }); !s) return s.error();
-    if (auto s = array_of_tables("test", [&](const toml::table& t) { return parse_test(t, file, g); }); !s) return s.error();
-    if (auto s = top.finish(); !s) return s.error();
+    // [view] before [[test]] (a test camera starts from the view's); [params] before everything
+    // that may name a param.
+    Status st = section("preset", [&](const toml::table& t) { return parse_preset(t, file, g); });
+    if (st) st = section("view", [&](const toml::table& t) { return parse_view(t, file, g); });
+    if (st) st = section("params", [&](const toml::table& t) { return parse_params(t, file, g); });
+    if (st) st = section("images", [&](const toml::table& t) { return parse_images(t, file, g); });
+    if (st) st = section("buffers", [&](const toml::table& t) { return parse_buffers(t, file, g); });
+    if (st) st = section("meshes", [&](const toml::table& t) { return parse_meshes(t, file, g); });
+    if (st) st = section("output", [&](const toml::table& t) { return parse_output(t, file, g); });
+    if (st) st = array_of_tables("pass", [&](const toml::table& t) { return parse_pass(t, file, g); });
+    if (st) st = array_of_tables("test", [&](const toml::table& t) { return parse_test(t, file, g); });
+    if (!st) return st.error();
     // toml++ iterates tables in key order; keep the order the user wrote (UI, std140 layout,
     // listing), which is the order of the source positions.
     auto by_position = [](const auto& a, const auto& b) {
@@ -141,8 +167,9 @@ Result<GraphDesc> parse_graph_text(std::string_view text_in, const fs::path& as_
 Result<GraphDesc> parse_graph_file(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     if (!in) {
-        Error e = make_error("cannot read '" + file.string() + "'");
-        e.code = ExitCode::user;
+        std::error_code ec;
+        Error e = make_error((fs::exists(file, ec) ? "cannot read '" : "no such file '") + file.string() + "'");
+        e.code = fs::exists(file, ec) ? ExitCode::environment : ExitCode::user;
         return e;
     }
     std::stringstream ss;

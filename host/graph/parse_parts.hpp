@@ -1,19 +1,30 @@
-// The section parsers of parse.cpp, one file per group of sections.
+// The section parsers of parse.cpp, one file per group of sections, and the few helpers they
+// share. Each fills GraphDesc and returns the first error, located at the offending value.
 #pragma once
 
 #include "graph/desc.hpp"
+#include "graph/toml_reader.hpp"
 
 #include <toml++/toml.h>
 
 namespace pl::graph {
 
-Status parse_params(const toml::table& t, const std::string& file, GraphDesc& g);
-Status parse_images(const toml::table& t, const std::string& file, GraphDesc& g);
-Status parse_buffers(const toml::table& t, const std::string& file, GraphDesc& g);
-Status parse_meshes(const toml::table& t, const std::string& file, GraphDesc& g);
-Status parse_pass(const toml::table& t, const std::string& file, GraphDesc& g);
-Status parse_test(const toml::table& t, const std::string& file, GraphDesc& g);
+Status parse_params(const toml::table& t, const std::string& file, GraphDesc& g);     // parse_params.cpp
+Status parse_images(const toml::table& t, const std::string& file, GraphDesc& g);     // parse_resources.cpp
+Status parse_buffers(const toml::table& t, const std::string& file, GraphDesc& g);    // parse_resources.cpp
+Status parse_meshes(const toml::table& t, const std::string& file, GraphDesc& g);     // parse_resources.cpp
+Status parse_pass(const toml::table& t, const std::string& file, GraphDesc& g);       // parse_passes.cpp
+Status parse_test(const toml::table& t, const std::string& file, GraphDesc& g);       // parse_tests.cpp
+Status parse_orbit(TableReader& r, OrbitCamera& o);                                   // parse.cpp
 
+// A GLSL identifier: [A-Za-z_][A-Za-z0-9_]*.
 bool is_identifier(const std::string& s);
+// Resource and param names become GLSL identifiers: they must be identifiers, not keywords or
+// reserved words (glslang rejects those with an error far from the TOML line), and not start
+// with "gl_" or contain "__" (reserved by GLSL). `what` is "param", "image", ...
+Status check_name(const TableReader& section, const std::string& key, const char* what);
+
+// The compare ops shared by depth tests, stencil faces and comparison samplers.
+const std::vector<std::string>& compare_ops();
 
 } // namespace pl::graph

@@ -1,170 +1,238 @@
-// [params], [images], [buffers], [meshes].
+// [images], [buffers], [meshes]: the resources passes read and write, by name.
 #include "graph/parse_parts.hpp"
-#include "graph/toml_reader.hpp"
+
+#include "vk/formats.hpp"
 
 #include <algorithm>
-
 #include <cctype>
-#include <set>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
 
 namespace pl::graph {
 
-bool is_identifier(const std::string& s) {
-    if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
-    for (char c : s)
-        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
-    return true;
-}
-
 namespace {
 
-const std::set<std::string> kGlslKeywords = {
-    "attribute", "const", "uniform", "varying", "buffer", "shared", "layout", "centroid", "flat", "smooth",
-    "break", "continue", "do", "for", "while", "switch", "case", "default", "if", "else", "in", "out", "inout",
-    "float", "double", "int", "void", "bool", "true", "false", "discard", "return", "struct", "vec2", "vec3",
-    "vec4", "ivec2", "ivec3", "ivec4", "bvec2", "bvec3", "bvec4", "uint", "uvec2", "uvec3", "uvec4", "mat2",
-    "mat3", "mat4", "sampler2D", "precision", "highp", "mediump", "lowp", "invariant", "coherent", "volatile",
-    "restrict", "readonly", "writeonly", "patch", "sample", "subroutine", "frame", "params", "main",
-    // Reserved for future use by GLSL 4.50 (glslang rejects them as identifiers).
-    "common", "partition", "active", "asm", "class", "union", "enum", "typedef", "template", "this",
-    "resource", "goto", "inline", "noinline", "public", "static", "extern", "external", "interface",
-    "long", "short", "half", "fixed", "unsigned", "superp", "input", "output", "hvec2", "hvec3",
-    "hvec4", "fvec2", "fvec3", "fvec4", "filter", "sizeof", "cast", "namespace", "using",
-    "precise", "texture", "dmat2", "dmat3", "dmat4"};
-
-Status check_name(const TableReader& r, const std::string& key, const char* what) {
-    if (!is_identifier(key))
-        return r.error(std::string(what) + " name '" + key + "' must be an identifier (letters, digits, _)", r.key_loc(key));
-    if (kGlslKeywords.count(key))
-        return r.error(std::string(what) + " name '" + key + "' is a GLSL keyword or a reserved name", r.key_loc(key));
-    return ok_status();
-}
+// The generators and their arguments are implemented in image/procedural.cpp and
+// scene/generators.cpp (image::generator_names, scene::generator_names), which the graph module
+// cannot link; the lists are repeated here so that a typo is reported at its TOML line with a
+// suggestion instead of when the resource is created. Adding a generator means adding it here.
+const std::vector<std::string> kImageGenerators = {"checker", "uv-grid", "value-noise", "gradient-noise", "constant"};
+const std::vector<std::string> kImageGeneratorArgs = {"cells", "color_a", "color_b", "frequency", "octaves", "seed", "value"};
+const std::vector<std::string> kMeshGenerators = {"plane", "cube", "sphere", "torus", "teapot"};
+const std::vector<std::string> kMeshArgs = {"size", "segments", "rings", "radius", "tube", "subdivisions"};
 
 const std::vector<std::string> kAddress = {"repeat", "clamp", "mirror", "border"};
-const std::vector<std::string> kCompare = {"never", "less", "equal", "less_equal", "greater", "not_equal",
-                                           "greater_equal", "always"};
 
-Status parse_sampler(const toml::table& t, const std::string& file, SamplerDesc& s) {
-    TableReader r(t, file, "sampler");
+bool contains(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+
+// Errors about one resource name it (the [resource 'x'] of the message).
+Status named(Status s, const std::string& resource) {
+    if (!s && s.error().resource.empty()) s.error().resource = resource;
+    return s;
+}
+
+Status parse_sampler(const toml::table& t, const std::string& file, const std::string& image, SamplerDesc& s, KeyLocs& locs) {
+    TableReader r(t, file, "image '" + image + "' sampler", &locs, "sampler.");
     s.loc = r.loc();
     if (auto st = r.choice("filter", s.filter, {"linear", "nearest"}); !st) return st;
     if (auto st = r.choice("mip_filter", s.mip_filter, {"linear", "nearest"}); !st) return st;
     if (const toml::node* a = r.get("address")) {
-        std::vector<std::string> modes;
-        if (a->is_string()) modes = {*a->value<std::string>()};
+        // One mode for every axis, or [u, v] / [u, v, w] (a missing w repeats v).
+        std::vector<std::pair<std::string, SourceLoc>> modes;
+        if (a->is_string()) modes = {{*a->value<std::string>(), r.loc_of(*a)}};
         else if (const toml::array* arr = a->as_array()) {
-            for (const auto& e : *arr)
-                if (e.is_string()) modes.push_back(*e.value<std::string>());
+            for (const auto& e : *arr) {
+                if (!e.is_string()) return r.type_error("address", "a mode or an array of 2 or 3 modes");
+                modes.push_back({*e.value<std::string>(), r.loc_of(e)});
+            }
+            if (modes.size() < 2 || modes.size() > 3) return r.type_error("address", "a mode or an array of 2 or 3 modes");
+        } else {
+            return r.type_error("address", "a mode or an array of 2 or 3 modes");
         }
-        if (modes.empty() || modes.size() > 3) return r.type_error("address", "a mode or [u, v] / [u, v, w] modes");
-        for (const auto& m : modes)
-            if (std::find(kAddress.begin(), kAddress.end(), m) == kAddress.end()) {
-                Error e = r.error("sampler: address mode \"" + m + "\" is not one of repeat, clamp, mirror, border", r.key_loc("address"));
-                std::string near = nearest_name(m, kAddress);
-                if (!near.empty()) e.hint = "did you mean \"" + near + "\"?";
+        for (const auto& [m, where] : modes)
+            if (!contains(kAddress, m)) {
+                Error e = r.error(r.what() + ": address mode \"" + m + "\" is unknown", where);
+                suggest(e, m, kAddress, "modes", {}, '"');
                 return e;
             }
-        for (size_t k = 0; k < 3; ++k) s.address[k] = modes[std::min(k, modes.size() - 1)];
+        for (size_t k = 0; k < 3; ++k) s.address[k] = modes[std::min(k, modes.size() - 1)].first;
     }
     if (auto st = r.choice("border", s.border, {"transparent_black", "opaque_black", "opaque_white"}); !st) return st;
     if (auto st = r.floats("anisotropy", s.anisotropy); !st) return st;
-    if (auto st = r.choice("compare", s.compare, kCompare); !st) return st;
+    if (auto st = r.choice("compare", s.compare, compare_ops()); !st) return st;
     if (auto st = r.floats("lod_bias", s.lod_bias); !st) return st;
     if (auto st = r.floats("min_lod", s.min_lod); !st) return st;
     if (auto st = r.floats("max_lod", s.max_lod); !st) return st;
-    if (s.anisotropy < 0 || s.anisotropy > 64) return r.error("sampler: anisotropy must be 0..64", r.key_loc("anisotropy"));
+    if (s.anisotropy < 0 || s.anisotropy > 64) return r.error(r.what() + ": anisotropy must be 0 (off) to 64", r.value_loc("anisotropy"));
+    if (s.min_lod < 0 || s.max_lod < s.min_lod) return r.error(r.what() + ": needs 0 <= min_lod <= max_lod", r.value_loc(r.has("max_lod") ? "max_lod" : "min_lod"));
     return r.finish();
 }
 
-} // namespace
-
-Status parse_params(const toml::table& t, const std::string& file, GraphDesc& g) {
-    TableReader sec(t, file, "[params]");
-    for (auto&& [k, v] : t) {
-        ParamDesc p;
-        p.name = std::string(k.str());
-        if (auto s = check_name(sec, p.name, "param"); !s) return s;
-        p.loc = sec.key_loc(p.name);
-        const toml::node* value = &v;
-        const toml::table* pt = v.as_table();
-        std::string type_name;
-        std::optional<TableReader> r;
-        bool color = false;
-        if (pt) {
-            r.emplace(*pt, file, "param '" + p.name + "'");
-            value = r->get("value");
-            if (!value) return r->error("param '" + p.name + "' needs a value", p.loc);
-            double mn = 0, mx = 0;
-            if (r->has("min")) {
-                if (auto s = r->number("min", mn); !s) return s;
-                p.min = mn;
-            }
-            if (r->has("max")) {
-                if (auto s = r->number("max", mx); !s) return s;
-                p.max = mx;
-            }
-            if (auto s = r->boolean("log", p.log); !s) return s;
-            if (auto s = r->boolean("color", color); !s) return s;
-            if (auto s = r->strings("options", p.options); !s) return s;
-            if (auto s = r->str("doc", p.doc); !s) return s;
-            if (auto s = r->choice("type", type_name, {"float", "int", "bool", "vec2", "vec3", "vec4", "color3", "color4", "enum"}); !s) return s;
-            if (auto s = r->finish(); !s) return s;
+Status parse_generator_args(TableReader& r, const std::string& image, ImageDesc& d) {
+    auto at = r.table("args", "a table { name = number or [numbers] }");
+    if (!at) return at.error();
+    if (!*at) return ok_status();
+    for (auto&& [ak, av] : **at) {
+        std::string key(ak.str());
+        SourceLoc where = r.loc_of(av);
+        if (!contains(kImageGeneratorArgs, key)) {
+            Error e = r.error("image '" + image + "': unknown generator argument '" + key + "'", where);
+            suggest(e, key, kImageGeneratorArgs, "arguments");
+            return e;
         }
-        // Infer the type from the value unless given.
-        if (value->is_boolean()) {
-            p.type = ParamType::boolean;
-            p.value[0] = *value->value<bool>() ? 1 : 0;
-        } else if (value->is_integer() && type_name != "float") {
-            p.type = ParamType::i32;
-            p.value[0] = static_cast<double>(*value->value<int64_t>());
-        } else if (value->is_number()) {
-            p.type = ParamType::f32;
-            p.value[0] = *value->value<double>();
-        } else if (value->is_string()) {
-            if (p.options.empty())
-                return sec.error("param '" + p.name + "': a string value needs options = [...] (an enum)", p.loc);
-            std::string sv = *value->value<std::string>();
-            auto it = std::find(p.options.begin(), p.options.end(), sv);
-            if (it == p.options.end()) {
-                Error e = sec.error("param '" + p.name + "': value \"" + sv + "\" is not one of its options", p.loc);
-                std::string near = nearest_name(sv, p.options);
-                if (!near.empty()) e.hint = "did you mean \"" + near + "\"?";
-                return e;
+        std::vector<double> vals;
+        if (av.is_number()) vals = {*av.value<double>()};
+        else if (const toml::array* arr = av.as_array()) {
+            for (const auto& e : *arr) {
+                if (!e.is_number()) return r.error("image '" + image + "': args." + key + " must be a number or an array of numbers", where);
+                vals.push_back(*e.value<double>());
             }
-            p.type = ParamType::enumeration;
-            p.value[0] = static_cast<double>(it - p.options.begin());
-            for (const auto& o : p.options)
-                if (!is_identifier(o)) return sec.error("param '" + p.name + "': option \"" + o + "\" must be an identifier", p.loc);
-        } else if (const toml::array* a = value->as_array()) {
-            size_t n = a->size();
-            if (n < 2 || n > 4) return sec.error("param '" + p.name + "': a vector has 2 to 4 numbers", p.loc);
-            for (size_t i = 0; i < n; ++i) {
-                if (!(*a)[i].is_number()) return sec.error("param '" + p.name + "': a vector has 2 to 4 numbers", p.loc);
-                p.value[i] = *(*a)[i].value<double>();
-            }
-            p.type = n == 2 ? ParamType::vec2 : n == 3 ? (color ? ParamType::color3 : ParamType::vec3)
-                                                       : (color ? ParamType::color4 : ParamType::vec4);
-        } else {
-            return sec.error("param '" + p.name + "': value must be a number, bool, vector or enum string", p.loc);
         }
-        if (type_name == "float" && p.type == ParamType::i32) p.type = ParamType::f32;
-        if (type_name == "int" && p.type == ParamType::f32) {
-            if (p.value[0] != static_cast<double>(static_cast<long long>(p.value[0])))
-                return sec.error("param '" + p.name + "' is declared int but its value is not an integer", p.loc);
-            p.type = ParamType::i32;
-        }
-        if (!p.options.empty() && p.type != ParamType::enumeration)
-            return sec.error("param '" + p.name + "': options need a string value (one of the options)", p.loc);
-        for (int c = 0; c < p.components(); ++c) {
-            if (p.min && p.value[static_cast<size_t>(c)] < *p.min)
-                return sec.error("param '" + p.name + "': value is below its min", p.loc);
-            if (p.max && p.value[static_cast<size_t>(c)] > *p.max)
-                return sec.error("param '" + p.name + "': value is above its max", p.loc);
-        }
-        g.params.push_back(std::move(p));
+        if (vals.empty() || vals.size() > 4) return r.error("image '" + image + "': args." + key + " must be a number or 1 to 4 numbers", where);
+        d.generator_args[key] = vals;
+        d.keys.map["args." + key] = where;
     }
     return ok_status();
 }
+
+Status parse_image(const toml::table& it, const std::string& file, ImageDesc& d) {
+    TableReader r(it, file, "image '" + d.name + "'", &d.keys);
+    auto err = [&](const std::string& msg, const std::string& key) {
+        Error e = r.error("image '" + d.name + "': " + msg, r.value_loc(key));
+        e.resource = d.name;
+        return e;
+    };
+    if (r.has("alias")) {
+        // An alias is another view of an existing image: same memory, same size and format,
+        // its own sampler. Anything else written on it would be silently ignored: refuse it.
+        if (auto s = r.str("alias", d.alias); !s) return s;
+        if (d.alias.empty()) return err("alias must name an image", "alias");
+        if (auto sm = r.table("sampler"); !sm) return sm.error();
+        else if (*sm) {
+            if (auto s = parse_sampler(**sm, file, d.name, d.sampler, d.keys); !s) return s;
+        }
+        for (auto&& [k, v] : it) {
+            std::string key(k.str());
+            if (key != "alias" && key != "sampler")
+                return err("'" + key + "' cannot be set on an alias; it shares '" + d.alias + "' (only sampler may differ)", key);
+        }
+        return ok_status();
+    }
+    std::string kind = "2d";
+    if (auto s = r.choice("kind", kind, {"2d", "2d-array", "3d", "cube"}); !s) return s;
+    d.kind = kind == "2d-array" ? ImageKind::tex2d_array : kind == "3d" ? ImageKind::tex3d
+             : kind == "cube"   ? ImageKind::cube        : ImageKind::tex2d;
+    if (auto s = r.str("format", d.format, &d.format_loc); !s) return s;
+    if (r.has("format") && !vk::find_format(d.format)) {
+        Error e = err("unknown format '" + d.format + "'", "format");
+        suggest(e, d.format, vk::format_names(), "formats");
+        return e;
+    }
+    if (auto s = r.size("size", d.size); !s) return s;
+    if (auto s = r.integer("layers", d.layers, 1, 2048); !s) return s;
+    if (r.has("layers") && d.kind != ImageKind::tex2d_array)
+        return err("layers applies to kind = \"2d-array\" (a cube always has 6)", "layers");
+    if (const toml::node* m = r.get("mips")) {
+        if (m->is_string() && *m->value<std::string>() == "full") d.mips = 0;
+        else if (m->is_integer()) {
+            int64_t v = *m->value<int64_t>();
+            if (v < 1 || v > 16) return err("mips must be 1..16 or \"full\", not " + std::to_string(v), "mips");
+            d.mips = static_cast<int>(v);
+        } else {
+            return r.type_error("mips", "an integer or \"full\"");
+        }
+    }
+    if (auto s = r.integer("samples", d.samples); !s) return s;
+    if (d.samples != 1 && d.samples != 2 && d.samples != 4 && d.samples != 8)
+        return err("samples must be 1, 2, 4 or 8, not " + std::to_string(d.samples), "samples");
+    if (auto s = r.boolean("history", d.history); !s) return s;
+    if (auto s = r.str("file", d.file); !s) return s;
+    if (auto s = r.boolean("srgb", d.srgb); !s) return s;
+    if (auto s = r.choice("generator", d.generator, kImageGenerators); !s) return s;
+    if (auto s = parse_generator_args(r, d.name, d); !s) return s;
+    std::vector<double> clear;
+    if (auto s = r.numbers("clear", clear, 4, 4); !s) return s;
+    if (!clear.empty()) d.clear = std::array<float, 4>{float(clear[0]), float(clear[1]), float(clear[2]), float(clear[3])};
+    if (auto sm = r.table("sampler"); !sm) return sm.error();
+    else if (*sm) {
+        if (auto s = parse_sampler(**sm, file, d.name, d.sampler, d.keys); !s) return s;
+    }
+    if (auto s = r.finish(); !s) return s;
+
+    if (r.has("file") && d.file.empty()) return err("file must name an image file", "file");
+    if (!d.file.empty() && !d.generator.empty()) return err("has both file and generator; choose one", "generator");
+    if (!d.file.empty() && r.has("size")) return err("a file image has the size of its file; remove size", "size");
+    if (!d.generator_args.empty() && d.generator.empty()) return err("args are generator arguments; add generator = \"...\"", "args");
+    if (d.srgb && d.file.empty() && d.generator.empty())
+        return err("srgb applies to file and generator images; a rendered image uses format = \"rgba8_srgb\"", "srgb");
+    if (d.kind == ImageKind::tex3d && d.samples > 1) return err("a 3D image cannot be multisampled", "samples");
+    if (d.samples > 1 && d.mips != 1) return err("a multisampled image has exactly one mip", "mips");
+    return ok_status();
+}
+
+Status parse_buffer(const toml::table& bt, const std::string& file, BufferDesc& d) {
+    TableReader r(bt, file, "buffer '" + d.name + "'", &d.keys);
+    if (!r.has("size")) return r.error("buffer '" + d.name + "' needs size = bytes (a number or an expression)", d.loc);
+    if (auto s = r.size("size", d.size); !s) return s;
+    if (auto s = r.integer("stride", d.stride, 0, 1 << 20); !s) return s;
+    if (r.has("clear")) {
+        uint32_t c = 0;
+        if (auto s = r.uinteger("clear", c); !s) return s;
+        d.clear = c;
+    }
+    if (auto s = r.numbers("data", d.data, 0, size_t(1) << 24); !s) return s;
+    if (auto s = r.choice("type", d.data_type, {"float", "int", "uint"}); !s) return s;
+    if (auto s = r.boolean("history", d.history); !s) return s;
+    if (auto s = r.finish(); !s) return s;
+    if (r.has("type") && d.data.empty()) return r.error("buffer '" + d.name + "': type describes data; add data = [...]", r.value_loc("type"));
+    // Integer data must be representable exactly in 32 bits of the declared type.
+    for (double x : d.data) {
+        bool ok = true;
+        if (d.data_type == "int") ok = x == std::floor(x) && x >= -2147483648.0 && x <= 2147483647.0;
+        if (d.data_type == "uint") ok = x == std::floor(x) && x >= 0 && x <= 4294967295.0;
+        if (!ok) {
+            char b[64];
+            std::snprintf(b, sizeof b, "%g", x);
+            return r.error("buffer '" + d.name + "': data value " + b + " is not a 32-bit " + d.data_type, r.value_loc("data"));
+        }
+    }
+    return ok_status();
+}
+
+Status parse_mesh(const toml::table& mt, const std::string& file, MeshDesc& d) {
+    TableReader r(mt, file, "mesh '" + d.name + "'", &d.keys);
+    if (auto s = r.choice("generator", d.generator, kMeshGenerators); !s) return s;
+    if (auto s = r.str("file", d.file); !s) return s;
+    if (auto s = r.integer("instances", d.instances, 1, 1000000); !s) return s;
+    if (d.generator.empty() == d.file.empty()) return r.error("mesh '" + d.name + "' needs exactly one of generator or file", d.loc);
+    if (!d.file.empty()) {
+        std::string ext = std::filesystem::path(d.file).extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        if (ext != ".obj" && ext != ".gltf" && ext != ".glb")
+            return r.error("mesh '" + d.name + "': file must be .obj, .gltf or .glb", r.value_loc("file"));
+    }
+    // Every other key is a numeric generator argument.
+    for (auto&& [ak, av] : mt) {
+        std::string key(ak.str());
+        if (key == "generator" || key == "file" || key == "instances") continue;
+        if (!contains(kMeshArgs, key)) {
+            Error e = r.error("mesh '" + d.name + "': unknown key '" + key + "'", r.key_loc(key));
+            std::vector<std::string> valid = {"generator", "file", "instances"};
+            valid.insert(valid.end(), kMeshArgs.begin(), kMeshArgs.end());
+            suggest(e, key, valid, "keys");
+            return e;
+        }
+        if (!d.file.empty()) return r.error("mesh '" + d.name + "': '" + key + "' is a generator argument; a file mesh takes none", r.key_loc(key));
+        double x = 0;
+        if (auto s = r.number(key, x); !s) return s;
+        if (!(x > 0)) return r.error("mesh '" + d.name + "': " + key + " must be > 0", r.value_loc(key));
+        d.args[key] = x;
+    }
+    return ok_status();
+}
+
+} // namespace
 
 Status parse_images(const toml::table& t, const std::string& file, GraphDesc& g) {
     TableReader sec(t, file, "[images]");
@@ -174,50 +242,8 @@ Status parse_images(const toml::table& t, const std::string& file, GraphDesc& g)
         if (auto s = check_name(sec, d.name, "image"); !s) return s;
         d.loc = sec.key_loc(d.name);
         const toml::table* it = v.as_table();
-        if (!it) return sec.error("image '" + d.name + "' must be a table { format = ..., size = ... }", d.loc);
-        TableReader r(*it, file, "image '" + d.name + "'");
-        std::string kind = "2d", mips;
-        if (auto s = r.choice("kind", kind, {"2d", "2d-array", "3d", "cube"}); !s) return s;
-        d.kind = kind == "2d-array" ? ImageKind::tex2d_array : kind == "3d" ? ImageKind::tex3d
-                 : kind == "cube" ? ImageKind::cube : ImageKind::tex2d;
-        if (auto s = r.str("format", d.format, &d.format_loc); !s) return s;
-        if (auto s = r.size("size", d.size); !s) return s;
-        if (auto s = r.integer("layers", d.layers); !s) return s;
-        if (const toml::node* m = r.get("mips")) {
-            if (m->is_string() && *m->value<std::string>() == "full") d.mips = 0;
-            else if (m->is_integer()) d.mips = static_cast<int>(*m->value<int64_t>());
-            else return r.type_error("mips", "an integer or \"full\"");
-            if (m->is_integer() && (d.mips < 1 || d.mips > 16)) return r.error("mips must be 1..16 or \"full\"", r.key_loc("mips"));
-        }
-        if (auto s = r.integer("samples", d.samples); !s) return s;
-        if (auto s = r.boolean("history", d.history); !s) return s;
-        if (auto s = r.str("alias", d.alias); !s) return s;
-        if (auto s = r.str("file", d.file); !s) return s;
-        if (auto s = r.boolean("srgb", d.srgb); !s) return s;
-        if (auto s = r.str("generator", d.generator); !s) return s;
-        if (const toml::node* a = r.get("args")) {
-            const toml::table* at = a->as_table();
-            if (!at) return r.type_error("args", "a table of numbers or number arrays");
-            for (auto&& [ak, av] : *at) {
-                std::vector<double> vals;
-                if (av.is_number()) vals = {*av.value<double>()};
-                else if (const toml::array* arr = av.as_array())
-                    for (const auto& e : *arr) {
-                        if (!e.is_number()) return r.type_error("args", "a table of numbers or number arrays");
-                        vals.push_back(*e.value<double>());
-                    }
-                else return r.type_error("args", "a table of numbers or number arrays");
-                d.generator_args[std::string(ak.str())] = vals;
-            }
-        }
-        std::vector<double> clear;
-        if (auto s = r.numbers("clear", clear, 4, 4); !s) return s;
-        if (!clear.empty()) d.clear = std::array<float, 4>{float(clear[0]), float(clear[1]), float(clear[2]), float(clear[3])};
-        if (const toml::node* sm = r.get("sampler")) {
-            if (!sm->as_table()) return r.type_error("sampler", "a table");
-            if (auto s = parse_sampler(*sm->as_table(), file, d.sampler); !s) return s;
-        }
-        if (auto s = r.finish(); !s) return s;
+        if (!it) return sec.error("image '" + d.name + "' must be a table { format = ..., size = ... }, not " + type_name(v), sec.loc_of(v));
+        if (auto s = parse_image(*it, file, d); !s) return named(s, d.name);
         g.images.push_back(std::move(d));
     }
     return ok_status();
@@ -231,20 +257,8 @@ Status parse_buffers(const toml::table& t, const std::string& file, GraphDesc& g
         if (auto s = check_name(sec, d.name, "buffer"); !s) return s;
         d.loc = sec.key_loc(d.name);
         const toml::table* bt = v.as_table();
-        if (!bt) return sec.error("buffer '" + d.name + "' must be a table { size = ... }", d.loc);
-        TableReader r(*bt, file, "buffer '" + d.name + "'");
-        if (!r.has("size")) return r.error("buffer '" + d.name + "' needs a size (bytes)", d.loc);
-        if (auto s = r.size("size", d.size); !s) return s;
-        if (auto s = r.integer("stride", d.stride); !s) return s;
-        if (r.has("clear")) {
-            int c = 0;
-            if (auto s = r.integer("clear", c); !s) return s;
-            d.clear = static_cast<uint32_t>(c);
-        }
-        if (auto s = r.numbers("data", d.data, 0, 1u << 20); !s) return s;
-        if (auto s = r.choice("type", d.data_type, {"float", "int", "uint"}); !s) return s;
-        if (auto s = r.boolean("history", d.history); !s) return s;
-        if (auto s = r.finish(); !s) return s;
+        if (!bt) return sec.error("buffer '" + d.name + "' must be a table { size = ... }, not " + type_name(v), sec.loc_of(v));
+        if (auto s = parse_buffer(*bt, file, d); !s) return named(s, d.name);
         g.buffers.push_back(std::move(d));
     }
     return ok_status();
@@ -258,25 +272,8 @@ Status parse_meshes(const toml::table& t, const std::string& file, GraphDesc& g)
         if (auto s = check_name(sec, d.name, "mesh"); !s) return s;
         d.loc = sec.key_loc(d.name);
         const toml::table* mt = v.as_table();
-        if (!mt) return sec.error("mesh '" + d.name + "' must be a table { generator = ... }", d.loc);
-        TableReader r(*mt, file, "mesh '" + d.name + "'");
-        if (auto s = r.str("generator", d.generator); !s) return s;
-        if (auto s = r.str("file", d.file); !s) return s;
-        if (auto s = r.integer("instances", d.instances); !s) return s;
-        if (d.generator.empty() == d.file.empty())
-            return r.error("mesh '" + d.name + "' needs exactly one of generator or file", d.loc);
-        if (d.instances < 1 || d.instances > 1000000)
-            return r.error("mesh '" + d.name + "': instances must be 1..1000000", r.key_loc("instances"));
-        // Every other numeric key is a generator argument (segments, radius, ...).
-        std::vector<std::string> args;
-        for (auto&& [ak, av] : *mt) {
-            std::string key(ak.str());
-            if (key == "generator" || key == "file" || key == "instances") continue;
-            if (!av.is_number()) return r.type_error(key, "a number (generator argument)");
-            d.args[key] = *av.value<double>();
-            args.push_back(key);
-        }
-        if (auto s = r.finish(args); !s) return s;
+        if (!mt) return sec.error("mesh '" + d.name + "' must be a table { generator = ... }, not " + type_name(v), sec.loc_of(v));
+        if (auto s = parse_mesh(*mt, file, d); !s) return named(s, d.name);
         g.meshes.push_back(std::move(d));
     }
     return ok_status();

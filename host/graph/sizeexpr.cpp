@@ -1,3 +1,6 @@
+// A recursive-descent evaluator over the expression text. No AST: expressions are a few tokens
+// long and evaluated once per (re)build, and evaluating while parsing keeps errors next to the
+// token that caused them.
 #include "graph/sizeexpr.hpp"
 
 #include <cctype>
@@ -8,174 +11,229 @@ namespace {
 
 using Vec = std::vector<int64_t>;
 
-struct Parser {
-    const std::string& s;
-    const SizeEnv& env;
-    const SourceLoc& loc;
-    size_t i = 0;
-    std::optional<Error> err;
+int64_t floor_div(int64_t x, int64_t y) { return x / y - ((x % y != 0) && ((x < 0) != (y < 0))); }
+int64_t floor_mod(int64_t x, int64_t y) { return x - floor_div(x, y) * y; }
+
+class Evaluator {
+  public:
+    Evaluator(const SizeExpr& e, const SizeEnv& env) : s_(e.text), env_(env), loc_(e.loc) {}
+
+    Result<Vec> run() {
+        auto v = expr();
+        if (!v) return *err_;
+        ws();
+        if (i_ < s_.size()) {
+            if (s_[i_] == ')') return fail("unbalanced ')'", i_);
+            if (std::isdigit(static_cast<unsigned char>(s_[i_])) || std::isalpha(static_cast<unsigned char>(s_[i_])))
+                return fail("expected an operator (+ - * / %) before '" + word_at(i_) + "'", i_);
+            return fail("unexpected '" + std::string(1, s_[i_]) + "'", i_);
+        }
+        return *v;
+    }
+
+  private:
+    const std::string& s_;
+    const SizeEnv& env_;
+    const SourceLoc& loc_;
+    size_t i_ = 0;
+    std::optional<Error> err_;
 
     Error fail(const std::string& msg, size_t at) {
-        // loc points at the opening quote of the TOML string: +1 for the quote.
-        SourceLoc l = loc;
-        if (l.col > 0) l.col += static_cast<int>(at) + 1;
-        Error e = make_error("size expression \"" + s + "\": " + msg, l);
-        return e;
+        SourceLoc l = loc_;
+        if (l.col > 0) l.col += static_cast<int>(at) + 1;  // +1: the opening quote
+        return make_error("size expression \"" + s_ + "\": " + msg, l);
+    }
+    std::nullopt_t set(Error e) {
+        err_ = std::move(e);
+        return std::nullopt;
     }
     void ws() {
-        while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+        while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
     }
-    static Vec bin(const Vec& a, const Vec& b, char op, bool& div0) {
+    bool ident_char(char c) const { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.'; }
+    std::string word_at(size_t at) const {
+        size_t e = at;
+        while (e < s_.size() && ident_char(s_[e])) ++e;
+        return s_.substr(at, std::max<size_t>(e - at, 1));
+    }
+
+    // Component-wise a OP b, scalars broadcast. `at` is the column of the right operand.
+    std::optional<Vec> apply(const Vec& a, const Vec& b, char op, size_t op_at, size_t at) {
+        if (a.size() != 1 && b.size() != 1 && a.size() != b.size())
+            return set(fail("cannot combine a " + std::to_string(a.size()) + "-vector with a " + std::to_string(b.size()) + "-vector",
+                            op_at));
         size_t n = std::max(a.size(), b.size());
         Vec r(n);
         for (size_t k = 0; k < n; ++k) {
             int64_t x = a.size() == 1 ? a[0] : a[k], y = b.size() == 1 ? b[0] : b[k];
+            bool overflow = false;
             switch (op) {
-            case '+': r[k] = x + y; break;
-            case '-': r[k] = x - y; break;
-            case '*': r[k] = x * y; break;
+            case '+': overflow = __builtin_add_overflow(x, y, &r[k]); break;
+            case '-': overflow = __builtin_sub_overflow(x, y, &r[k]); break;
+            case '*': overflow = __builtin_mul_overflow(x, y, &r[k]); break;
             case '/':
-                if (y == 0) { div0 = true; return r; }
-                r[k] = x / y - ((x % y != 0) && ((x < 0) != (y < 0)));
-                break;
             case '%':
-                if (y == 0) { div0 = true; return r; }
-                r[k] = x % y;
-                break;
-            case 'c':  // ceil_div
-                if (y == 0) { div0 = true; return r; }
-                r[k] = (x + y - 1) / y;
+            case 'c':
+                if (y == 0) return set(fail("division by zero", at));
+                if (x == INT64_MIN && y == -1) overflow = true;
+                else if (op == '/') r[k] = floor_div(x, y);
+                else if (op == '%') r[k] = floor_mod(x, y);
+                else r[k] = -floor_div(-x, y);  // ceil(x / y); x > INT64_MIN here
                 break;
             case 'm': r[k] = std::min(x, y); break;
             case 'M': r[k] = std::max(x, y); break;
             }
+            if (overflow) return set(fail("the value is too large", op_at));
         }
         return r;
     }
-    bool compatible(const Vec& a, const Vec& b) { return a.size() == 1 || b.size() == 1 || a.size() == b.size(); }
 
     std::optional<Vec> expr() {
         auto a = term();
         while (a) {
             ws();
-            if (i < s.size() && (s[i] == '+' || s[i] == '-')) {
-                char op = s[i++];
-                size_t at = i;
-                auto b = term();
-                if (!b) return std::nullopt;
-                if (!compatible(*a, *b)) { err = fail("vectors of different sizes", at); return std::nullopt; }
-                bool d0 = false;
-                a = bin(*a, *b, op, d0);
-            } else break;
+            if (i_ >= s_.size() || (s_[i_] != '+' && s_[i_] != '-')) break;
+            size_t op_at = i_;
+            char op = s_[i_++];
+            ws();
+            size_t at = i_;
+            auto b = term();
+            if (!b) return b;
+            a = apply(*a, *b, op, op_at, at);
         }
         return a;
     }
+
     std::optional<Vec> term() {
         auto a = unary();
         while (a) {
             ws();
-            if (i < s.size() && (s[i] == '*' || s[i] == '/' || s[i] == '%')) {
-                char op = s[i++];
-                size_t at = i;
-                auto b = unary();
-                if (!b) return std::nullopt;
-                if (!compatible(*a, *b)) { err = fail("vectors of different sizes", at); return std::nullopt; }
-                bool d0 = false;
-                a = bin(*a, *b, op, d0);
-                if (d0) { err = fail("division by zero", at); return std::nullopt; }
-            } else break;
+            if (i_ >= s_.size() || (s_[i_] != '*' && s_[i_] != '/' && s_[i_] != '%')) break;
+            size_t op_at = i_;
+            char op = s_[i_++];
+            ws();
+            size_t at = i_;
+            auto b = unary();
+            if (!b) return b;
+            a = apply(*a, *b, op, op_at, at);
         }
         return a;
     }
+
     std::optional<Vec> unary() {
         ws();
-        if (i < s.size() && s[i] == '-') {
-            ++i;
+        if (i_ < s_.size() && s_[i_] == '-') {
+            size_t at = i_++;
             auto v = unary();
-            if (v) for (auto& x : *v) x = -x;
+            if (v)
+                for (auto& x : *v) {
+                    if (x == INT64_MIN) return set(fail("the value is too large", at));
+                    x = -x;
+                }
             return v;
+        }
+        if (i_ < s_.size() && s_[i_] == '+') {  // unary plus: harmless, accepted
+            ++i_;
+            return unary();
         }
         return primary();
     }
+
+    std::optional<Vec> call(const std::string& fn, size_t at) {
+        ws();
+        if (i_ >= s_.size() || s_[i_] != '(') return set(fail(fn + " takes two arguments: " + fn + "(a, b)", at));
+        ++i_;
+        auto a = expr();
+        if (!a) return a;
+        ws();
+        if (i_ >= s_.size() || s_[i_] != ',') return set(fail("expected ',' (" + fn + " takes two arguments)", i_));
+        ++i_;
+        ws();
+        size_t b_at = i_;
+        auto b = expr();
+        if (!b) return b;
+        ws();
+        if (i_ >= s_.size() || s_[i_] != ')') return set(fail("expected ')' to close " + fn + "(", i_));
+        ++i_;
+        return apply(*a, *b, fn == "min" ? 'm' : fn == "max" ? 'M' : 'c', at, b_at);
+    }
+
     std::optional<Vec> primary() {
         ws();
-        if (i >= s.size()) { err = fail("unexpected end", i); return std::nullopt; }
-        size_t at = i;
-        if (std::isdigit(static_cast<unsigned char>(s[i]))) {
+        if (i_ >= s_.size()) return set(fail("the expression ends where a value was expected", i_));
+        size_t at = i_;
+        char c = s_[i_];
+        if (std::isdigit(static_cast<unsigned char>(c))) {
             int64_t v = 0;
-            while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) {
-                v = v * 10 + (s[i++] - '0');
-                if (v > (int64_t(1) << 40)) { err = fail("number too large", at); return std::nullopt; }
+            while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) {
+                if (__builtin_mul_overflow(v, 10, &v) || __builtin_add_overflow(v, s_[i_] - '0', &v))
+                    return set(fail("the number is too large", at));
+                ++i_;
             }
+            if (i_ < s_.size() && (s_[i_] == '.' || std::isalpha(static_cast<unsigned char>(s_[i_]))))
+                return set(fail("sizes are integers: '" + word_at(at) + "' is not one", at));
             return Vec{v};
         }
-        if (s[i] == '(') {
-            ++i;
+        if (c == '(') {
+            ++i_;
             auto v = expr();
-            ws();
             if (!v) return v;
-            if (i >= s.size() || s[i] != ')') { err = fail("expected ')'", i); return std::nullopt; }
-            ++i;
+            ws();
+            if (i_ >= s_.size() || s_[i_] != ')') return set(fail("expected ')' to close the '(' at column " + std::to_string(col(at)), i_));
+            ++i_;
             return v;
         }
-        if (std::isalpha(static_cast<unsigned char>(s[i])) || s[i] == '_') {
+        if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
             std::string id;
-            while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '_' || s[i] == '.')) id += s[i++];
-            ws();
-            if (id == "min" || id == "max" || id == "ceil_div") {
-                if (i >= s.size() || s[i] != '(') { err = fail("expected '(' after " + id, i); return std::nullopt; }
-                ++i;
-                auto a = expr();
-                if (!a) return a;
-                ws();
-                if (i >= s.size() || s[i] != ',') { err = fail("expected ','", i); return std::nullopt; }
-                ++i;
-                auto b = expr();
-                if (!b) return b;
-                ws();
-                if (i >= s.size() || s[i] != ')') { err = fail("expected ')'", i); return std::nullopt; }
-                ++i;
-                bool d0 = false;
-                auto r = bin(*a, *b, id == "min" ? 'm' : id == "max" ? 'M' : 'c', d0);
-                if (d0) { err = fail("division by zero", at); return std::nullopt; }
-                return r;
-            }
-            if (id == "view") return Vec{env.view_w, env.view_h};
-            if (id == "view.w" || id == "view.x") return Vec{env.view_w};
-            if (id == "view.h" || id == "view.y") return Vec{env.view_h};
+            while (i_ < s_.size() && ident_char(s_[i_])) id += s_[i_++];
+            if (id == "min" || id == "max" || id == "ceil_div") return call(id, at);
+            if (id == "view") return Vec{env_.view_w, env_.view_h};
+            if (id == "view.w" || id == "view.x") return Vec{env_.view_w};
+            if (id == "view.h" || id == "view.y") return Vec{env_.view_h};
             if (id.rfind("params.", 0) == 0) {
-                auto p = env.params.find(id.substr(7));
-                if (p != env.params.end()) return Vec{static_cast<int64_t>(p->second)};
+                auto p = env_.params.find(id.substr(7));
+                if (p != env_.params.end()) {
+                    double v = p->second;
+                    if (!(v > -9.2e18 && v < 9.2e18)) return set(fail("param '" + p->first + "' is out of range", at));
+                    return Vec{static_cast<int64_t>(v)};  // floats truncate toward zero
+                }
             }
-            std::vector<std::string> known = {"view", "view.w", "view.h", "min", "max", "ceil_div"};
-            for (const auto& [k, v] : env.params) known.push_back("params." + k);
             Error e = fail("unknown name '" + id + "'", at);
-            suggest(e, id, known, "names");
-            err = e;
-            return std::nullopt;
+            auto names = size_names(env_);
+            suggest(e, id, names, "names");
+            return set(std::move(e));
         }
-        err = fail(std::string("unexpected '") + s[i] + "'", at);
-        return std::nullopt;
+        return set(fail("unexpected '" + std::string(1, c) + "'", at));
     }
+
+    int col(size_t at) const { return loc_.col > 0 ? loc_.col + 1 + static_cast<int>(at) : static_cast<int>(at) + 1; }
 };
 
 } // namespace
 
+std::vector<std::string> size_names(const SizeEnv& env) {
+    std::vector<std::string> names = {"view", "view.w", "view.h"};
+    for (const auto& [k, v] : env.params) names.push_back("params." + k);
+    names.insert(names.end(), {"min", "max", "ceil_div"});
+    return names;
+}
+
 Result<std::vector<int64_t>> eval_size(const SizeExpr& e, const SizeEnv& env) {
     if (!e.literal.empty()) return e.literal;
-    if (e.text.empty()) return make_error("empty size expression", e.loc);
-    Parser p{e.text, env, e.loc};
-    auto v = p.expr();
-    p.ws();
-    if (v && p.i < e.text.size()) return p.fail(std::string("unexpected '") + e.text[p.i] + "'", p.i);
-    if (!v) return *p.err;
-    return *v;
+    if (e.text.find_first_not_of(" \t") == std::string::npos) return make_error("empty size expression", e.loc);
+    return Evaluator(e, env).run();
 }
 
 Result<int64_t> eval_scalar(const SizeExpr& e, const SizeEnv& env) {
     auto v = eval_size(e, env);
     if (!v) return v.error();
-    if (v->size() != 1) return make_error("expected a single number, the expression gives a " + std::to_string(v->size()) + "-vector", e.loc);
+    if (v->size() != 1) {
+        Error err = make_error("expected a single number; " + std::string(e.text.empty() ? "the size" : "\"" + e.text + "\"") +
+                                   " is a " + std::to_string(v->size()) + "-vector",
+                               e.loc);
+        if (e.text.find("view") != std::string::npos) err.hint = "use view.w or view.h for one side of the view";
+        return err;
+    }
     return (*v)[0];
 }
 
@@ -184,11 +242,21 @@ Result<Extent> eval_extent(const SizeExpr& e, const SizeEnv& env, int dims) {
     if (!v) return v.error();
     Extent x;
     const auto& a = *v;
-    if (a.size() == 1) x.w = x.h = a[0], x.d = dims == 3 ? a[0] : 1;
-    else if (a.size() == 2) x.w = a[0], x.h = a[1];
-    else if (a.size() == 3) x.w = a[0], x.h = a[1], x.d = a[2];
-    else return make_error("a size has 1 to 3 components", e.loc);
-    if (dims < 3 && a.size() == 3) return make_error("a 2D size has 2 components, not 3", e.loc);
+    if (a.size() == 1) {
+        x.w = x.h = a[0];
+        x.d = dims == 3 ? a[0] : 1;
+    } else if (a.size() == 2) {
+        x.w = a[0];
+        x.h = a[1];
+    } else if (a.size() == 3 && dims == 3) {
+        x.w = a[0];
+        x.h = a[1];
+        x.d = a[2];
+    } else if (a.size() == 3) {
+        return make_error("a 2D size has 1 or 2 components, not 3 (only kind = \"3d\" images have a depth)", e.loc);
+    } else {
+        return make_error("a size has 1 to 3 components, not " + std::to_string(a.size()), e.loc);
+    }
     return x;
 }
 

@@ -1,5 +1,9 @@
-// Size expressions: "view", "view/2", "view.w*view.h*4", "ceil_div(view.w, 8)", [w,h], 256.
-// Values are integer vectors of 1-3 components; scalars broadcast; division floors.
+// Size expressions: "view", "view/2", "view.w*view.h*4", "ceil_div(view, 8)", [w,h], 256.
+// Values are integer vectors of 1-3 components; `view` is the 2-vector (w, h); scalars
+// broadcast; + - * / % and unary minus with the usual precedence; / and % floor (so that
+// a == (a / b) * b + a % b for negative values too); min, max and ceil_div take two arguments.
+// Errors point at the offending token: the SizeExpr's loc is the start of the TOML value (the
+// opening quote), so the column of a token is loc.col + 1 + its offset in the string.
 #pragma once
 
 #include "graph/desc.hpp"
@@ -10,7 +14,7 @@ namespace pl::graph {
 
 struct SizeEnv {
     int64_t view_w = 640, view_h = 360;
-    std::map<std::string, double> params;  // params.NAME (truncated to integer)
+    std::map<std::string, double> params;  // params.NAME (truncated toward zero)
 };
 
 struct Extent {
@@ -18,8 +22,13 @@ struct Extent {
 };
 
 Result<std::vector<int64_t>> eval_size(const SizeExpr& e, const SizeEnv& env);
+// A single number (buffer bytes, repeat counts); a vector is an error.
 Result<int64_t> eval_scalar(const SizeExpr& e, const SizeEnv& env);
-// dims 2 or 3: a scalar means a square/cube; a 2-vector in 3D gets depth 1.
+// dims 2 or 3: a scalar means a square (256 -> 256x256) or a cube; a 2-vector in 3D gets
+// depth 1; a 3-vector in 2D is an error.
 Result<Extent> eval_extent(const SizeExpr& e, const SizeEnv& env, int dims);
+
+// The names an expression may use in `env` (for messages and docs).
+std::vector<std::string> size_names(const SizeEnv& env);
 
 } // namespace pl::graph

@@ -1,232 +1,341 @@
-#include "graph/validate.hpp"
+// Graph-wide checks: names, resources, output, tests; passes are validate_passes.cpp and sizes
+// validate_sizes.cpp. The first error is returned: later ones are often consequences of it.
+#include "graph/validate_parts.hpp"
 
 #include "vk/formats.hpp"
 
-#include <set>
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
 
 namespace fs = std::filesystem;
 
 namespace pl::graph {
 
-namespace {
-
-// Limits: large enough for any course technique, small enough that a typo cannot make the host
-// allocate until the machine swaps.
-constexpr int64_t kMaxDim = 16384, kMax3D = 2048;
-constexpr int64_t kMaxImageBytes = int64_t(2) << 30, kMaxBufferBytes = int64_t(1) << 30;
+std::vector<std::string> DeclaredNames::resources() const {
+    std::vector<std::string> all = images;
+    all.insert(all.end(), buffers.begin(), buffers.end());
+    return all;
+}
 
 Error ref_error(const std::string& what, const std::string& name, const SourceLoc& loc, const std::string& pass,
-                const std::vector<std::string>& valid) {
+                const std::vector<std::string>& valid, const std::string& label) {
     Error e = make_error(what + " '" + name + "' does not exist", loc);
     e.pass = pass;
     e.resource = name;
-    suggest(e, name, valid, "declared", "none are declared");
+    suggest(e, name, valid, label, "none are declared");
     return e;
 }
 
 std::string human_bytes(double b) {
     char buf[64];
     if (b >= double(1ull << 30)) std::snprintf(buf, sizeof buf, "%.1f GiB", b / double(1ull << 30));
-    else std::snprintf(buf, sizeof buf, "%.1f MiB", b / double(1ull << 20));
+    else if (b >= double(1ull << 20)) std::snprintf(buf, sizeof buf, "%.1f MiB", b / double(1ull << 20));
+    else std::snprintf(buf, sizeof buf, "%.0f bytes", b);
     return buf;
 }
 
-} // namespace
+fs::path passes_dir() {
+    if (const char* root = std::getenv("PASSLAB_ROOT"); root && *root) return fs::path(root) / "passes";
+    return fs::path(PASSLAB_SOURCE_DIR) / "passes";
+}
+
+std::vector<fs::path> default_search_dirs(const GraphDesc& g) { return {g.dir, passes_dir()}; }
 
 fs::path resolve_shader_path(const std::string& file, const std::vector<fs::path>& search) {
+    if (file.empty()) return {};
     std::error_code ec;
     for (const auto& d : search)
         if (fs::is_regular_file(d / file, ec)) return d / file;
     return {};
 }
 
-Status validate_graph(GraphDesc& g, const ValidateOptions& opt) {
-    std::vector<std::string> images, buffers, meshes, params, samplable;
-    std::set<std::string> names;
-    for (const auto& i : g.images) {
-        if (!names.insert(i.name).second) {
-            Error e = make_error("the name '" + i.name + "' is used twice", i.loc);
-            return e;
+fs::path resolve_shader_path(const GraphDesc& g, const std::string& file, const std::vector<fs::path>& search) {
+    return resolve_shader_path(file, search.empty() ? default_search_dirs(g) : search);
+}
+
+std::string effective_format(const GraphDesc& g, const ImageDesc& d) {
+    if (!d.alias.empty()) {
+        const ImageDesc* t = g.find_image(d.alias);
+        return t && t != &d && t->alias.empty() ? effective_format(g, *t) : d.format;
+    }
+    // Mirrors exec/resources.cpp: a written format wins; files and generators pick their own.
+    if (d.format_loc.known() || (d.file.empty() && d.generator.empty())) return d.format;
+    if (!d.file.empty()) {
+        std::string ext = fs::path(d.file).extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        if (ext == ".exr" || ext == ".hdr") return "rgba32f";
+    }
+    return d.srgb ? "rgba8_srgb" : d.format;
+}
+
+std::string default_output(const GraphDesc& g) {
+    auto colour = [&](const std::string& name) {
+        const ImageDesc* d = g.find_image(name);
+        if (!d) return false;
+        const vk::FormatInfo* f = vk::find_format(effective_format(g, *d));
+        return f && !f->is_depth;
+    };
+    for (auto it = g.passes.rbegin(); it != g.passes.rend(); ++it) {
+        if (!it->enabled) continue;
+        if ((it->kind == PassKind::fullscreen || it->kind == PassKind::draw) && !it->targets.empty()) {
+            const AttachmentRef& t = it->targets.front();
+            if (!t.resolve.empty() && colour(t.resolve)) return t.resolve;
+            if (colour(t.image)) return t.image;
         }
-        images.push_back(i.name);
+        if ((it->kind == PassKind::blit || it->kind == PassKind::copy) && colour(it->dst)) return it->dst;
+    }
+    for (auto it = g.images.rbegin(); it != g.images.rend(); ++it)
+        if (colour(it->name)) return it->name;
+    return {};
+}
+
+namespace {
+
+Status check_names(const GraphDesc& g, DeclaredNames& n) {
+    // Images and buffers share one namespace: a shader binds either by the name it declares.
+    std::map<std::string, SourceLoc> seen;
+    auto add = [&](const std::string& name, const SourceLoc& loc, const char* what) -> Status {
+        auto [it, fresh] = seen.emplace(name, loc);
+        if (fresh) return ok_status();
+        Error e = make_error("the name '" + name + "' is used twice (images and buffers share one namespace)", loc);
+        e.resource = name;
+        e.notes.push_back(std::string("this ") + what + "; the first is at " + it->second.str());
+        return e;
+    };
+    for (const auto& i : g.images) {
+        if (auto s = add(i.name, i.loc, "image"); !s) return s;
+        n.images.push_back(i.name);
     }
     for (const auto& b : g.buffers) {
-        if (!names.insert(b.name).second) return make_error("the name '" + b.name + "' is used by an image and a buffer", b.loc);
-        buffers.push_back(b.name);
+        if (auto s = add(b.name, b.loc, "buffer"); !s) return s;
+        n.buffers.push_back(b.name);
     }
+    // `<name>_prev` is how shaders read last frame's contents of a history resource.
+    auto reserve = [&](const std::string& name, bool history, const SourceLoc& loc) -> Status {
+        if (!history) return ok_status();
+        auto it = seen.find(name + "_prev");
+        if (it == seen.end()) return ok_status();
+        Error e = make_error("'" + name + "_prev' is reserved for the previous frame of history resource '" + name + "'", it->second);
+        e.resource = name + "_prev";
+        e.notes.push_back("'" + name + "' is declared with history = true at " + loc.str());
+        return e;
+    };
     for (const auto& i : g.images)
-        if (i.history && names.count(i.name + "_prev"))
-            return make_error("'" + i.name + "_prev' is reserved for the previous frame of history image '" + i.name + "'", i.loc);
-    for (const auto& m : g.meshes) meshes.push_back(m.name);
-    for (const auto& p : g.params) params.push_back(p.name);
+        if (auto s = reserve(i.name, i.history, i.loc); !s) return s;
+    for (const auto& b : g.buffers)
+        if (auto s = reserve(b.name, b.history, b.loc); !s) return s;
+    std::map<std::string, SourceLoc> meshes;
+    for (const auto& m : g.meshes) {
+        if (auto [it, fresh] = meshes.emplace(m.name, m.loc); !fresh)
+            return make_error("a mesh named '" + m.name + "' already exists (first at " + it->second.str() + ")", m.loc);
+        n.meshes.push_back(m.name);
+    }
+    for (const auto& p : g.params) n.params.push_back(p.name);
+    return ok_status();
+}
 
-    SizeEnv env;
-    env.view_w = g.view.size[0];
-    env.view_h = g.view.size[1];
-    for (const auto& p : g.params) env.params[p.name] = p.value[0];
-
-    auto format_names = vk::format_names();
-    for (auto& i : g.images) {
-        auto err = [&](const std::string& msg, SourceLoc l) {
-            Error e = make_error("image '" + i.name + "': " + msg, l.known() ? l : i.loc);
+Status check_images(const GraphDesc& g, const DeclaredNames& n) {
+    for (const auto& i : g.images) {
+        auto err = [&](const std::string& msg, const std::string& key) {
+            Error e = make_error("image '" + i.name + "': " + msg, i.keys.at(key, i.loc));
             e.resource = i.name;
             return e;
         };
         if (!i.alias.empty()) {
             const ImageDesc* target = g.find_image(i.alias);
-            if (!target) return ref_error("alias target image", i.alias, i.loc, "", images);
-            if (!target->alias.empty()) return err("an alias cannot point at another alias", i.loc);
+            if (!target || target == &i) {
+                std::vector<std::string> others;
+                for (const auto& o : n.images)
+                    if (o != i.name) others.push_back(o);
+                Error e = ref_error("alias target image", i.alias, i.keys.at("alias", i.loc), "", others, "images");
+                e.message = "image '" + i.name + "': " + e.message;
+                return e;
+            }
+            if (!target->alias.empty()) return err("'" + i.alias + "' is itself an alias; point at '" + target->alias + "'", "alias");
             continue;
         }
         const vk::FormatInfo* f = vk::find_format(i.format);
         if (!f) {
-            Error e = err("unknown format '" + i.format + "'", i.format_loc);
-            suggest(e, i.format, format_names, "formats");
+            Error e = err("unknown format '" + i.format + "'", "format");
+            suggest(e, i.format, vk::format_names(), "formats");
             return e;
         }
-        if (!i.file.empty() && !i.generator.empty()) return err("has both file and generator; choose one", i.loc);
+        const vk::FormatInfo* ef = vk::find_format(effective_format(g, i));
         if (!i.file.empty()) {
             std::error_code ec;
-            if (!fs::is_regular_file(g.dir / i.file, ec)) return err("file '" + i.file + "' not found next to preset.toml", i.loc);
-            continue;
-        }
-        if (i.samples != 1 && i.samples != 2 && i.samples != 4 && i.samples != 8) return err("samples must be 1, 2, 4 or 8", i.loc);
-        if (i.samples > 1 && i.mips != 1) return err("a multisampled image has exactly one mip", i.loc);
-        if (i.layers < 1 || i.layers > 2048) return err("layers must be 1..2048", i.loc);
-        SizeExpr size = i.size;
-        if (size.empty()) {
-            if (i.generator.empty()) size.text = "view";
-            else size.literal = {256, 256};
-        }
-        int dims = i.kind == ImageKind::tex3d ? 3 : 2;
-        auto ext = eval_extent(size, env, dims);
-        if (!ext) {
-            Error e = ext.error();
-            e.resource = i.name;
-            return e;
-        }
-        int64_t limit = dims == 3 ? kMax3D : kMaxDim;
-        std::string text = std::to_string(ext->w) + "x" + std::to_string(ext->h) + (dims == 3 ? "x" + std::to_string(ext->d) : "");
-        if (ext->w < 1 || ext->h < 1 || ext->d < 1)
-            return err("size evaluates to " + text + "; every side must be at least 1", size.loc);
-        if (ext->w > limit || ext->h > limit || ext->d > limit)
-            return err("size evaluates to " + text + "; sides are limited to " + std::to_string(limit), size.loc);
-        if (i.kind == ImageKind::cube && ext->w != ext->h) return err("a cube image must be square, not " + text, size.loc);
-        int64_t layers = i.kind == ImageKind::cube ? 6 : i.layers;
-        double bytes = double(ext->w) * double(ext->h) * double(ext->d) * layers * f->bytes_per_texel * i.samples * (i.history ? 2 : 1) *
-                       (i.mips == 1 ? 1.0 : 4.0 / 3.0);
-        if (bytes > double(kMaxImageBytes))
-            return err("would need " + human_bytes(bytes) + " (limit " + human_bytes(double(kMaxImageBytes)) + ")", size.loc);
-    }
-    for (const auto& b : g.buffers) {
-        auto sz = eval_scalar(b.size, env);
-        if (!sz) {
-            Error e = sz.error();
-            e.resource = b.name;
-            return e;
-        }
-        if (*sz < 4 || *sz > kMaxBufferBytes) {
-            Error e = make_error("buffer '" + b.name + "': size evaluates to " + std::to_string(*sz) +
-                                     " bytes; it must be between 4 bytes and " + human_bytes(double(kMaxBufferBytes)),
-                                 b.size.loc);
-            e.resource = b.name;
-            return e;
-        }
-    }
-
-    for (auto& p : g.passes) {
-        auto perr = [&](const std::string& msg, const SourceLoc& l) {
-            Error e = make_error(msg, l.known() ? l : p.loc);
-            e.pass = p.name;
-            return e;
-        };
-        auto need_image = [&](const std::string& n, const SourceLoc& l) -> Status {
-            if (g.find_image(n)) return ok_status();
-            return ref_error("image", n, l.known() ? l : p.loc, p.name, images);
-        };
-        auto need_shader = [&](const ShaderRef& s, const char* what) -> Status {
-            if (s.empty()) return ok_status();
-            if (resolve_shader_path(s.file, opt.search_dirs).empty()) {
-                Error e = perr(std::string(what) + " shader '" + s.file + "' not found", s.loc);
-                for (const auto& d : opt.search_dirs) e.notes.push_back("looked in " + d.string());
+            if (!fs::is_regular_file(g.dir / i.file, ec)) {
+                Error e = err("file '" + i.file + "' not found", "file");
+                e.notes.push_back("looked for " + (g.dir / i.file).string() + " (files are relative to the preset folder)");
                 return e;
             }
-            return ok_status();
-        };
-        bool raster = p.kind == PassKind::fullscreen || p.kind == PassKind::draw;
-        if (p.kind == PassKind::fullscreen && p.fragment.empty()) return perr("a fullscreen pass needs fragment = \"file.frag\"", p.loc);
-        if (p.kind == PassKind::draw && p.vertex.empty()) return perr("a draw pass needs vertex = \"file.vert\"", p.loc);
-        if (p.kind == PassKind::compute) {
-            if (p.compute.empty()) return perr("a compute pass needs compute = \"file.comp\"", p.loc);
-            if (p.groups.empty() == p.threads.empty() && p.indirect.empty())
-                return perr("a compute pass needs exactly one of groups or threads (or indirect)", p.loc);
         }
-        if (!raster && (!p.vertex.empty() || !p.fragment.empty() || !p.geometry.empty()))
-            return perr("a " + std::string(p.kind == PassKind::compute ? "compute" : "transfer") + " pass takes no vertex/fragment shaders", p.loc);
-        if (p.kind != PassKind::compute && !p.compute.empty()) return perr("only compute passes take compute = ...", p.compute.loc);
-        if ((p.kind == PassKind::blit || p.kind == PassKind::copy) && (p.src.empty() || p.dst.empty()))
-            return perr("a blit/copy pass needs src and dst", p.loc);
-        if ((p.kind == PassKind::mips || p.kind == PassKind::clear) && p.image.empty())
-            return perr("a mips/clear pass needs image = \"name\"", p.loc);
-        if (raster && p.targets.empty() && !p.depth) return perr("the pass renders into nothing: add targets or depth", p.loc);
-        for (const auto* s : {&p.vertex, &p.fragment, &p.geometry, &p.tess_control, &p.tess_eval, &p.compute})
-            if (auto st = need_shader(*s, "the"); !st) return st;
-        std::set<std::string> used;
-        for (const auto& t : p.targets) {
-            if (auto s = need_image(t.image, t.loc); !s) return s;
-            const ImageDesc* d = g.find_image(t.image);
-            const ImageDesc* base = d->alias.empty() ? d : g.find_image(d->alias);
-            const vk::FormatInfo* f = vk::find_format(base->format);
-            if (f && f->is_depth) return perr("'" + t.image + "' has a depth format; use depth = \"" + t.image + "\"", t.loc);
-            if (!used.insert(base->name).second) return perr("image '" + t.image + "' is attached twice", t.loc);
-            if (!t.resolve.empty())
-                if (auto s = need_image(t.resolve, t.loc); !s) return s;
+        if (!i.file.empty() && !i.generator.empty()) return err("has both file and generator; choose one", "generator");
+        if (i.samples != 1 && i.samples != 2 && i.samples != 4 && i.samples != 8) return err("samples must be 1, 2, 4 or 8", "samples");
+        if (i.samples > 1 && i.mips != 1) return err("a multisampled image has exactly one mip", "mips");
+        if (i.samples > 1 && (!i.file.empty() || !i.generator.empty())) return err("a file or generator image cannot be multisampled", "samples");
+        if (i.kind == ImageKind::tex3d && i.samples > 1) return err("a 3D image cannot be multisampled", "samples");
+        if (i.layers < 1) return err("layers must be at least 1", "layers");
+        if (ef && ef->is_depth) {
+            if (i.kind == ImageKind::tex3d) return err("a 3D image cannot have a depth format", "format");
+            if (!i.file.empty() || !i.generator.empty()) return err("a file or generator image cannot have a depth format", "format");
         }
-        if (p.depth) {
-            if (auto s = need_image(p.depth->target.image, p.depth->target.loc); !s) return s;
-            const ImageDesc* d = g.find_image(p.depth->target.image);
-            const vk::FormatInfo* f = vk::find_format(d->alias.empty() ? d->format : g.find_image(d->alias)->format);
-            if (f && !f->is_depth) return perr("depth image '" + d->name + "' has colour format " + d->format + "; use d32, d24s8 or d32s8", p.depth->loc);
-            if (p.stencil.enable && f && !f->has_stencil) return perr("stencil needs a depth image with stencil (d24s8 or d32s8)", p.stencil.loc);
-            if (used.count(d->name)) return perr("image '" + d->name + "' is both a colour target and the depth target", p.depth->loc);
-        } else if (p.stencil.enable) {
-            return perr("stencil needs a depth attachment with a stencil format", p.stencil.loc);
+    }
+    return ok_status();
+}
+
+// The value of a test `set` must have the param's type and lie within its range.
+Status check_set_value(const ParamDesc& p, const Value& v, const SourceLoc& loc, const std::string& test) {
+    auto bad = [&](const std::string& why) {
+        Error e = make_error("test '" + test + "': set." + p.name + " " + why, loc);
+        e.resource = p.name;
+        e.notes.push_back("param '" + p.name + "' is declared at " + p.loc.str());
+        return e;
+    };
+    std::vector<double> nums;
+    switch (p.type) {
+    case ParamType::boolean:
+        if (!std::holds_alternative<bool>(v)) return bad("must be true or false (the param is a bool)");
+        return ok_status();
+    case ParamType::enumeration: {
+        const std::string* s = std::get_if<std::string>(&v);
+        if (!s) return bad("must be one of the options (a string)");
+        if (std::find(p.options.begin(), p.options.end(), *s) == p.options.end()) {
+            Error e = bad("is \"" + *s + "\", not one of the options");
+            suggest(e, *s, p.options, "options", {}, '"');
+            return e;
         }
-        for (const auto* n : {&p.src, &p.dst, &p.image}) {
-            if (n->empty()) continue;
-            bool is_buffer = g.find_buffer(*n) != nullptr;
-            if (is_buffer && (p.kind == PassKind::copy || p.kind == PassKind::clear)) continue;
-            if (auto s = need_image(*n, p.loc); !s) return s;
+        return ok_status();
+    }
+    case ParamType::f32:
+    case ParamType::i32:
+        if (!std::holds_alternative<double>(v)) return bad("must be a number");
+        nums = {std::get<double>(v)};
+        if (p.type == ParamType::i32 && nums[0] != static_cast<double>(static_cast<long long>(nums[0])))
+            return bad("must be an integer (the param is an int)");
+        break;
+    default: {
+        const auto* vec = std::get_if<std::vector<double>>(&v);
+        if (!vec || static_cast<int>(vec->size()) != p.components())
+            return bad("must be " + std::to_string(p.components()) + " numbers");
+        nums = *vec;
+    }
+    }
+    for (double x : nums) {
+        char b[64];
+        if (p.min && x < *p.min) {
+            std::snprintf(b, sizeof b, "value %g is below its min %g", x, *p.min);
+            return bad(b);
         }
-        if (!p.src.empty() && p.src == p.dst) return perr("src and dst are the same image", p.loc);
-        if (!p.mesh.empty() && !g.find_mesh(p.mesh)) return ref_error("mesh", p.mesh, p.loc, p.name, meshes);
-        if (!p.indirect.empty() && !g.find_buffer(p.indirect)) return ref_error("indirect buffer", p.indirect, p.loc, p.name, buffers);
-        if (p.kind == PassKind::draw && p.mesh.empty() && p.vertex_count <= 0 && p.indirect.empty())
-            return perr("a draw pass without mesh needs vertex_count > 0 (vertices from gl_VertexIndex)", p.loc);
-        for (const auto& s : p.swap)
-            if (!g.find_image(s)) return ref_error("swap image", s, p.swap_loc, p.name, images);
-        for (const auto& [shader_name, res] : p.bind)
-            if (!g.find_image(res) && !g.find_buffer(res)) {
-                std::vector<std::string> all = images;
-                all.insert(all.end(), buffers.begin(), buffers.end());
-                return ref_error("bind target", res, p.bind_loc, p.name, all);
+        if (p.max && x > *p.max) {
+            std::snprintf(b, sizeof b, "value %g is above its max %g", x, *p.max);
+            return bad(b);
+        }
+    }
+    return ok_status();
+}
+
+Status check_tests(const GraphDesc& g, const DeclaredNames& n) {
+    for (size_t k = 0; k < g.tests.size(); ++k) {
+        const TestDesc& t = g.tests[k];
+        for (size_t j = 0; j < k; ++j)
+            if (g.tests[j].name == t.name)
+                return make_error("a test named '" + t.name + "' already exists (first at " + g.tests[j].loc.str() + ")", t.loc);
+        for (const auto& [k, v] : t.set) {
+            SourceLoc loc = t.keys.at("set." + k, t.loc);
+            const ParamDesc* p = g.find_param(k);
+            if (!p) {
+                Error e = ref_error("param", k, loc, "", n.params, "params");
+                e.message = "test '" + t.name + "': " + e.message;
+                return e;
             }
+            if (auto s = check_set_value(*p, v, loc, t.name); !s) return s;
+        }
+        auto need_image = [&](const std::string& name, const SourceLoc& loc) -> Status {
+            if (name.empty() || g.find_image(name)) return ok_status();
+            Error e = ref_error("image", name, loc, "", n.images, "images");
+            e.message = "test '" + t.name + "': " + e.message;
+            return e;
+        };
+        if (auto s = need_image(t.pass, t.keys.at("pass", t.loc)); !s) return s;
+        for (const auto& c : t.checks) {
+            for (const char* key : {"pass", "other"}) {
+                auto it = c.args.find(key);
+                if (it == c.args.end()) continue;
+                const std::string* s = std::get_if<std::string>(&it->second);
+                if (!s) return make_error("test '" + t.name + "': " + c.kind + " " + key + " must name an image", c.loc);
+                if (auto st = need_image(*s, c.loc); !st) return st;
+            }
+            auto it = c.args.find("param");
+            if (it != c.args.end() && (c.kind == "matches_variant" || c.kind == "monotone")) {
+                const std::string* s = std::get_if<std::string>(&it->second);
+                if (!s || !g.find_param(*s)) {
+                    Error e = ref_error("param", s ? *s : "?", c.loc, "", n.params, "params");
+                    e.message = "test '" + t.name + "': " + c.kind + ": " + e.message;
+                    return e;
+                }
+            }
+        }
     }
-    std::set<std::string> pass_names;
-    for (const auto& t : g.tests) {
-        for (const auto& [k, v] : t.set)
-            if (!g.find_param(k)) return ref_error("param", k, t.loc, "", params);
-        if (!t.pass.empty() && !g.find_image(t.pass)) return ref_error("image", t.pass, t.loc, "", images);
+    return ok_status();
+}
+
+SizeEnv base_env(const GraphDesc& g, const ValidateOptions& opt) {
+    SizeEnv env;
+    std::array<int, 2> view = opt.view_size ? *opt.view_size : g.view.size;
+    env.view_w = view[0];
+    env.view_h = view[1];
+    for (const auto& p : g.params) env.params[p.name] = p.value[0];
+    return env;
+}
+
+} // namespace
+
+Status validate_graph(const GraphDesc& g, const ValidateOptions& opt) {
+    DeclaredNames names;
+    if (auto s = check_names(g, names); !s) return s;
+    if (auto s = check_images(g, names); !s) return s;
+    SizeEnv env = base_env(g, opt);
+    if (auto s = validate_sizes(g, env, {}, {}); !s) return s;
+    if (auto s = validate_passes(g, opt, names); !s) return s;
+
+    if (!g.output.empty()) {
+        if (!g.find_image(g.output)) {
+            SourceLoc loc = g.output_loc.known() ? g.output_loc : SourceLoc{g.file.string(), 0, 0};
+            Error e = ref_error("output image", g.output, loc, "", names.images, "images");
+            if (g.find_buffer(g.output)) e.message = "[output]: '" + g.output + "' is a buffer; the output is an image";
+            return e;
+        }
+    } else if (default_output(g).empty()) {
+        Error e = make_error("the graph has no colour image to output", {g.file.string(), 0, 0});
+        e.hint = "declare an image in [images] and render into it";
+        return e;
     }
-    // Default output: the first colour target of the last pass that has one.
-    if (g.output.empty()) {
-        for (auto it = g.passes.rbegin(); it != g.passes.rend() && g.output.empty(); ++it)
-            if (!it->targets.empty()) g.output = it->targets.front().image;
-        if (g.output.empty() && !g.images.empty()) g.output = g.images.back().name;
-        if (g.output.empty()) return make_error("the graph has no image to output", {g.file.string(), 1, 1});
-    } else if (!g.find_image(g.output)) {
-        return ref_error("output image", g.output, g.output_loc, "", images);
-    }
+
+    if (auto s = check_tests(g, names); !s) return s;
+    if (opt.per_test_sizes)
+        for (const auto& t : g.tests) {
+            if (!t.size && t.set.empty()) continue;
+            SizeEnv te = env;
+            if (t.size) te.view_w = (*t.size)[0], te.view_h = (*t.size)[1];
+            for (const auto& [k, v] : t.set) {
+                const ParamDesc* p = g.find_param(k);
+                if (const double* d = std::get_if<double>(&v)) te.params[k] = *d;
+                else if (const bool* b = std::get_if<bool>(&v)) te.params[k] = *b ? 1 : 0;
+                else if (const auto* vec = std::get_if<std::vector<double>>(&v); vec && !vec->empty()) te.params[k] = (*vec)[0];
+                else if (const std::string* s = std::get_if<std::string>(&v); s && p)
+                    te.params[k] = static_cast<double>(std::find(p->options.begin(), p->options.end(), *s) - p->options.begin());
+            }
+            std::string context = "in test '" + t.name + "' (" + std::to_string(te.view_w) + "x" + std::to_string(te.view_h) + ")";
+            if (auto s = validate_sizes(g, te, context, t.loc); !s) return s;
+        }
+    return ok_status();
+}
+
+Status validate_graph(GraphDesc& g, const ValidateOptions& opt) {
+    if (auto s = validate_graph(static_cast<const GraphDesc&>(g), opt); !s) return s;
+    if (g.output.empty()) g.output = default_output(g);
     return ok_status();
 }
 

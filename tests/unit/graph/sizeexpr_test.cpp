@@ -1,66 +1,191 @@
+// Size expressions: values, operators and precedence, vectors and broadcasting, floor division,
+// and errors that point at the offending token.
 #include "graph/sizeexpr.hpp"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 using namespace pl;
 using namespace pl::graph;
 
 namespace {
+
+// As if written at preset.toml:7:10 (the opening quote of the TOML string).
 SizeExpr text(const std::string& t) {
     SizeExpr e;
     e.text = t;
     e.loc = {"preset.toml", 7, 10};
     return e;
 }
+
 SizeEnv env() {
     SizeEnv e;
     e.view_w = 640;
     e.view_h = 360;
     e.params["taps"] = 5;
+    e.params["spread"] = 2.9;
+    e.params["neg"] = -2.9;
     return e;
 }
-} // namespace
 
-TEST(SizeExpr, ViewAndVectorArithmetic) {
-    EXPECT_EQ(*eval_size(text("view"), env()), (std::vector<int64_t>{640, 360}));
-    EXPECT_EQ(*eval_size(text("view/2"), env()), (std::vector<int64_t>{320, 180}));
-    EXPECT_EQ(*eval_size(text("view.w*view.h*4"), env()), (std::vector<int64_t>{921600}));
-    EXPECT_EQ(*eval_size(text("(view + 15) / 16"), env()), (std::vector<int64_t>{40, 23}));
-    EXPECT_EQ(*eval_size(text("ceil_div(view, 16)"), env()), (std::vector<int64_t>{40, 23}));
-    EXPECT_EQ(*eval_size(text("max(view.w, 1000) - min(3, 2) % 2"), env()), (std::vector<int64_t>{1000}));
-    EXPECT_EQ(*eval_size(text("params.taps * 2 + -1"), env()), (std::vector<int64_t>{9}));
-    EXPECT_EQ(*eval_size(text("2 + 3 * 4"), env()), (std::vector<int64_t>{14}));  // precedence
+std::vector<int64_t> eval(const std::string& t) {
+    auto r = eval_size(text(t), env());
+    EXPECT_TRUE(r) << t << ": " << (r ? "" : r.error().format());
+    return r ? *r : std::vector<int64_t>{};
 }
 
-TEST(SizeExpr, LiteralsAndExtents) {
+using V = std::vector<int64_t>;
+
+// Column of the token at `offset` in the string: quote at 10, first character at 11.
+int col_of(size_t offset) { return 10 + 1 + static_cast<int>(offset); }
+
+} // namespace
+
+TEST(SizeExpr, NamesAndLiterals) {
+    EXPECT_EQ(eval("view"), (V{640, 360}));
+    EXPECT_EQ(eval("view.w"), (V{640}));
+    EXPECT_EQ(eval("view.h"), (V{360}));
+    EXPECT_EQ(eval("params.taps"), (V{5}));
+    EXPECT_EQ(eval("  42  "), (V{42}));
+    EXPECT_EQ(eval("params.spread"), (V{2}));  // floats truncate
+    EXPECT_EQ(eval("params.neg"), (V{-2}));    // ... toward zero
+    SizeExpr lit;
+    lit.literal = {64, 32};
+    EXPECT_EQ(*eval_size(lit, env()), (V{64, 32}));
+}
+
+TEST(SizeExpr, OperatorsAndPrecedence) {
+    EXPECT_EQ(eval("2 + 3 * 4"), (V{14}));
+    EXPECT_EQ(eval("(2 + 3) * 4"), (V{20}));
+    EXPECT_EQ(eval("10 - 4 - 3"), (V{3}));    // left associative
+    EXPECT_EQ(eval("100 / 10 / 5"), (V{2}));
+    EXPECT_EQ(eval("7 % 4 * 2"), (V{6}));     // * / % share a level, left to right
+    EXPECT_EQ(eval("2 * 3 % 4"), (V{2}));
+    EXPECT_EQ(eval("1 + 7 % 4"), (V{4}));
+    EXPECT_EQ(eval("-3 + 10"), (V{7}));       // unary minus binds tighter than +
+    EXPECT_EQ(eval("- -3"), (V{3}));
+    EXPECT_EQ(eval("-(2 + 3) * 2"), (V{-10}));
+    EXPECT_EQ(eval("2 * -3"), (V{-6}));
+    EXPECT_EQ(eval("+4"), (V{4}));
+    EXPECT_EQ(eval("view.w*view.h*4"), (V{921600}));
+    EXPECT_EQ(eval("params.taps * 2 + -1"), (V{9}));
+    EXPECT_EQ(eval("((((1))))"), (V{1}));
+}
+
+TEST(SizeExpr, FloorDivisionAndModulo) {
+    EXPECT_EQ(eval("7 / 2"), (V{3}));
+    EXPECT_EQ(eval("-7 / 2"), (V{-4}));  // floor, not truncation
+    EXPECT_EQ(eval("7 / -2"), (V{-4}));
+    EXPECT_EQ(eval("-7 / -2"), (V{3}));
+    EXPECT_EQ(eval("-7 % 2"), (V{1}));   // a == (a / b) * b + a % b
+    EXPECT_EQ(eval("7 % -2"), (V{-1}));
+    EXPECT_EQ(eval("ceil_div(7, 2)"), (V{4}));
+    EXPECT_EQ(eval("ceil_div(8, 2)"), (V{4}));
+    EXPECT_EQ(eval("ceil_div(-7, 2)"), (V{-3}));
+    EXPECT_EQ(eval("ceil_div(0, 16)"), (V{0}));
+}
+
+TEST(SizeExpr, FunctionsAndVectors) {
+    EXPECT_EQ(eval("view/2"), (V{320, 180}));
+    EXPECT_EQ(eval("(view + 15) / 16"), (V{40, 23}));
+    EXPECT_EQ(eval("ceil_div(view, 16)"), (V{40, 23}));
+    EXPECT_EQ(eval("2 * view"), (V{1280, 720}));  // scalars broadcast on either side
+    EXPECT_EQ(eval("view * view"), (V{409600, 129600}));
+    EXPECT_EQ(eval("view - view"), (V{0, 0}));
+    EXPECT_EQ(eval("view % 100"), (V{40, 60}));
+    EXPECT_EQ(eval("-view"), (V{-640, -360}));
+    EXPECT_EQ(eval("min(view, 400)"), (V{400, 360}));
+    EXPECT_EQ(eval("max(view, 400)"), (V{640, 400}));
+    EXPECT_EQ(eval("max(view.w, 1000) - min(3, 2) % 2"), (V{1000}));
+    EXPECT_EQ(eval("min(max(1, 2), ceil_div(view.h, 7))"), (V{2}));
+    EXPECT_EQ(eval("max( view.w , view.h )"), (V{640}));
+}
+
+TEST(SizeExpr, Extents) {
     SizeExpr lit;
     lit.literal = {256};
     auto e = eval_extent(lit, env(), 2);
     ASSERT_TRUE(e);
-    EXPECT_EQ(e->w, 256);
+    EXPECT_EQ(e->w, 256);  // size = 256 means 256x256
     EXPECT_EQ(e->h, 256);
+    EXPECT_EQ(e->d, 1);
     auto c = eval_extent(lit, env(), 3);
-    EXPECT_EQ(c->d, 256);
+    EXPECT_EQ(c->d, 256);  // and 256^3 for a 3D image
+    auto v = eval_extent(text("view/2"), env(), 3);
+    ASSERT_TRUE(v);
+    EXPECT_EQ(v->w, 320);
+    EXPECT_EQ(v->d, 1);    // a 2-vector in 3D has depth 1
+    auto s = eval_extent(text("view.w / 10"), env(), 2);
+    EXPECT_EQ(s->h, 64);   // expressions broadcast too
     lit.literal = {64, 32, 16};
-    EXPECT_FALSE(eval_extent(lit, env(), 2));
+    auto bad = eval_extent(lit, env(), 2);
+    ASSERT_FALSE(bad);
+    EXPECT_NE(bad.error().message.find("not 3"), std::string::npos);
     EXPECT_EQ(eval_extent(lit, env(), 3)->d, 16);
-    EXPECT_FALSE(eval_scalar(text("view"), env()));  // a vector where a number is needed
+    EXPECT_EQ(*eval_scalar(text("view.w * 4"), env()), 2560);
+    auto vec = eval_scalar(text("view"), env());  // a vector where a number is needed
+    ASSERT_FALSE(vec);
+    EXPECT_NE(vec.error().message.find("2-vector"), std::string::npos);
+    EXPECT_NE(vec.error().hint.find("view.w"), std::string::npos);
 }
 
-TEST(SizeExpr, ErrorsPointAtTheToken) {
-    auto d = eval_size(text("view / 0"), env());
-    ASSERT_FALSE(d);
-    EXPECT_NE(d.error().message.find("division by zero"), std::string::npos);
+TEST(SizeExpr, DivisionByZeroPointsAtTheDivisor) {
+    for (auto [t, offset] : {std::pair<const char*, size_t>{"view / 0", 7}, {"view.w % (1 - 1)", 9}, {"ceil_div(8, 0)", 12}}) {
+        auto r = eval_size(text(t), env());
+        ASSERT_FALSE(r) << t;
+        EXPECT_NE(r.error().message.find("division by zero"), std::string::npos) << t;
+        EXPECT_EQ(r.error().loc.line, 7);
+        EXPECT_EQ(r.error().loc.col, col_of(offset)) << t;
+    }
+    EXPECT_FALSE(eval_size(text("view / (view - view)"), env()));  // any component
+}
+
+TEST(SizeExpr, UnknownNameSuggestsAndLists) {
     auto u = eval_size(text("veiw.w * 2"), env());
     ASSERT_FALSE(u);
     EXPECT_NE(u.error().message.find("unknown name 'veiw.w'"), std::string::npos);
+    EXPECT_NE(u.error().message.find("\"veiw.w * 2\""), std::string::npos);  // the expression is quoted
     EXPECT_EQ(u.error().hint, "did you mean 'view.w'?");
+    EXPECT_EQ(u.error().loc.file, "preset.toml");
     EXPECT_EQ(u.error().loc.line, 7);
-    EXPECT_EQ(u.error().loc.col, 11);  // opening quote at 10, token at offset 0
-    auto p = eval_size(text("view.w * (2"), env());
+    EXPECT_EQ(u.error().loc.col, col_of(0));
+    ASSERT_FALSE(u.error().notes.empty());
+    EXPECT_NE(u.error().notes[0].find("view.h"), std::string::npos);
+    EXPECT_NE(u.error().notes[0].find("params.taps"), std::string::npos);
+
+    auto p = eval_size(text("view.w / params.tap"), env());
     ASSERT_FALSE(p);
-    EXPECT_NE(p.error().message.find("expected ')'"), std::string::npos);
-    auto j = eval_size(text("view.w $ 2"), env());
-    ASSERT_FALSE(j);
-    EXPECT_EQ(j.error().loc.col, 10 + 1 + 7);
+    EXPECT_EQ(p.error().hint, "did you mean 'params.taps'?");
+    EXPECT_EQ(p.error().loc.col, col_of(9));
+    auto bare = eval_size(text("taps * 2"), env());
+    ASSERT_FALSE(bare);
+    EXPECT_EQ(bare.error().loc.col, col_of(0));
+}
+
+TEST(SizeExpr, SyntaxErrorsPointAtTheToken) {
+    struct Case {
+        const char* text;
+        size_t offset;
+        const char* says;
+    };
+    for (const Case& c : {Case{"view.w $ 2", 7, "unexpected '$'"}, Case{"view.w * (2", 11, "expected ')'"},
+                          Case{"view 2", 5, "expected an operator"}, Case{"view.w *", 8, "ends where a value"},
+                          Case{"(view))", 6, "unbalanced ')'"}, Case{"2.5 * view", 0, "integers"},
+                          Case{"min(view)", 8, "expected ','"}, Case{"max", 0, "two arguments"},
+                          Case{"99999999999999999999", 0, "too large"}, Case{"view.w * 10000000000 * 10000000000", 21, "too large"}}) {
+        auto r = eval_size(text(c.text), env());
+        ASSERT_FALSE(r) << c.text;
+        EXPECT_NE(r.error().message.find(c.says), std::string::npos) << c.text << ": " << r.error().message;
+        EXPECT_EQ(r.error().loc.col, col_of(c.offset)) << c.text << ": " << r.error().message;
+    }
+    SizeExpr empty = text("   ");
+    EXPECT_FALSE(eval_size(empty, env()));
+}
+
+TEST(SizeExpr, NamesForMessages) {
+    auto names = size_names(env());
+    EXPECT_EQ(names[0], "view");
+    EXPECT_NE(std::find(names.begin(), names.end(), "params.spread"), names.end());
+    EXPECT_NE(std::find(names.begin(), names.end(), "ceil_div"), names.end());
 }

@@ -1,0 +1,132 @@
+// [[test]]: test cases for `passlab test`. Probes are checked here (they have a fixed shape);
+// other checks carry free-form arguments that check/ interprets and reports on.
+#include "graph/parse_parts.hpp"
+
+namespace pl::graph {
+
+namespace {
+
+Status parse_probe(const toml::table& t, TableReader& owner, CheckDesc& c) {
+    TableReader r(t, owner.file(), owner.what() + " probe");
+    c.kind = "probe";
+    c.loc = r.loc();
+    std::vector<double> uv, px, expect;
+    double tol = 0.01;
+    std::string pass;
+    if (auto s = r.numbers("uv", uv, 2, 2); !s) return s;
+    if (auto s = r.numbers("px", px, 2, 2); !s) return s;
+    if (auto s = r.numbers("expect", expect, 1, 4); !s) return s;
+    if (auto s = r.number("tol", tol); !s) return s;
+    if (auto s = r.str("pass", pass); !s) return s;
+    if (auto s = r.finish({"channel", "channels"}); !s) return s;
+    if (uv.empty() == px.empty()) return r.error(r.what() + " needs exactly one of uv = [u, v] (0..1) or px = [x, y]", c.loc);
+    if (expect.empty()) return r.error(r.what() + " needs expect = [1 to 4 values]", c.loc);
+    if (tol < 0) return r.error(r.what() + ": tol must be >= 0", r.value_loc("tol"));
+    for (auto&& [k, v] : t) {
+        auto value = to_value(v, r, std::string(k.str()));
+        if (!value) return value.error();
+        c.args[std::string(k.str())] = *value;
+    }
+    return ok_status();
+}
+
+Status parse_check(const toml::table& t, TableReader& owner, CheckDesc& c) {
+    TableReader r(t, owner.file(), owner.what() + " check");
+    c.loc = r.loc();
+    if (auto s = r.str("kind", c.kind); !s) return s;
+    if (c.kind.empty()) return r.error(r.what() + " needs kind = \"...\" (probe, no_nan, range, mean, ...)", c.loc);
+    if (c.kind == "probe") return parse_probe(t, owner, c);
+    for (auto&& [k, v] : t) {
+        std::string key(k.str());
+        if (key == "kind") continue;
+        auto value = to_value(v, r, key);
+        if (!value) return value.error();
+        c.args[key] = *value;
+    }
+    return ok_status();
+}
+
+Status parse_test_body(const toml::table& t, const std::string& file, GraphDesc& g, TestDesc& d) {
+    std::string what = "[[test]]";
+    if (const toml::node* n = t.get("name"); n && n->is_string()) what = "test '" + *n->value<std::string>() + "'";
+    TableReader r(t, file, what, &d.keys);
+    d.loc = r.loc();
+    if (auto s = r.str("name", d.name); !s) return s;
+    if (d.name.empty()) return r.error("[[test]] needs name = \"...\"", d.loc);
+    d.loc = r.key_loc("name");
+    for (const auto& other : g.tests)
+        if (other.name == d.name) {
+            Error e = r.error("a test named '" + d.name + "' already exists", d.loc);
+            e.notes.push_back("the first is at " + other.loc.str());
+            return e;
+        }
+    std::vector<int64_t> size;
+    if (auto s = r.integers("size", size, 2, 2); !s) return s;
+    if (!size.empty()) {
+        if (size[0] < 1 || size[1] < 1 || size[0] > 16384 || size[1] > 16384)
+            return r.error(r.what() + ": size " + std::to_string(size[0]) + "x" + std::to_string(size[1]) + " is outside 1x1 .. 16384x16384",
+                           r.value_loc("size"));
+        d.size = std::array<int, 2>{int(size[0]), int(size[1])};
+    }
+    if (auto s = r.number("time", d.time); !s) return s;
+    if (auto s = r.integer("frames", d.frames, 1, 100000); !s) return s;
+    if (auto s = r.number("step", d.step); !s) return s;
+    if (!(d.step > 0)) return r.error(r.what() + ": step must be > 0 seconds", r.value_loc("step"));
+    auto set = r.table("set", "a table { param = value }");
+    if (!set) return set.error();
+    if (*set)
+        for (auto&& [k, v] : **set) {
+            std::string key(k.str());
+            auto value = to_value(v, r, "set." + key);
+            if (!value) return value.error();
+            d.set[key] = *value;
+            d.keys.map["set." + key] = r.loc_of(v);
+        }
+    auto cam = r.table("camera", "a table { target, distance, yaw, pitch }");
+    if (!cam) return cam.error();
+    if (*cam) {
+        TableReader cr(**cam, file, r.what() + " camera");
+        OrbitCamera o = g.view.orbit;  // unspecified values keep the view's
+        if (auto s = parse_orbit(cr, o); !s) return s;
+        d.camera = o;
+    }
+    if (auto s = r.str("pass", d.pass); !s) return s;
+    if (auto s = r.str("golden", d.golden); !s) return s;
+    auto tol = r.table("tolerance", "a table { rmse = number, ... }");
+    if (!tol) return tol.error();
+    if (*tol)
+        for (auto&& [k, v] : **tol) {
+            if (!v.is_number()) return r.error(r.what() + ": tolerance." + std::string(k.str()) + " must be a number, not " + type_name(v), r.loc_of(v));
+            double x = *v.value<double>();
+            if (x < 0) return r.error(r.what() + ": tolerance." + std::string(k.str()) + " must be >= 0", r.loc_of(v));
+            d.tolerance[std::string(k.str())] = x;
+        }
+    // probes = [...] and checks = [...]: arrays of inline tables.
+    for (const char* key : {"probes", "checks"}) {
+        const toml::node* n = r.get(key);
+        if (!n) continue;
+        const toml::array* a = n->as_array();
+        if (!a) return r.type_error(key, "an array of tables");
+        for (const auto& e : *a) {
+            const toml::table* ct = e.as_table();
+            if (!ct) return r.error(r.what() + ": " + key + " holds tables { ... }, not " + type_name(e), r.loc_of(e));
+            CheckDesc c;
+            Status s = std::string(key) == "probes" ? parse_probe(*ct, r, c) : parse_check(*ct, r, c);
+            if (!s) return s;
+            d.checks.push_back(std::move(c));
+        }
+    }
+    if (auto s = r.strings("requires", d.requires_features); !s) return s;
+    return r.finish();
+}
+
+} // namespace
+
+Status parse_test(const toml::table& t, const std::string& file, GraphDesc& g) {
+    TestDesc d;
+    if (auto s = parse_test_body(t, file, g, d); !s) return s;
+    g.tests.push_back(std::move(d));
+    return ok_status();
+}
+
+} // namespace pl::graph
