@@ -38,4 +38,17 @@ int ParamDesc::components() const {
     return 1;
 }
 
+const char* kind_name(PassKind k) {
+    switch (k) {
+    case PassKind::fullscreen: return "fullscreen";
+    case PassKind::draw: return "draw";
+    case PassKind::compute: return "compute";
+    case PassKind::blit: return "blit";
+    case PassKind::mips: return "mips";
+    case PassKind::clear: return "clear";
+    case PassKind::copy: return "copy";
+    }
+    return "?";
+}
+
 } // namespace pl::graph

@@ -159,6 +159,7 @@ struct ClearDesc {
 };
 
 enum class PassKind { fullscreen, draw, compute, blit, mips, clear, copy };
+const char* kind_name(PassKind k);  // as written in preset.toml
 
 struct ShaderRef {
     std::string file;  // as written, relative to the preset folder (or passes/)

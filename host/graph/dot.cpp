@@ -28,18 +28,6 @@ std::string size_text(const SizeExpr& e) {
     return s;
 }
 
-const char* kind_name(PassKind k) {
-    switch (k) {
-    case PassKind::fullscreen: return "fullscreen";
-    case PassKind::draw: return "draw";
-    case PassKind::compute: return "compute";
-    case PassKind::blit: return "blit";
-    case PassKind::mips: return "mips";
-    case PassKind::clear: return "clear";
-    case PassKind::copy: return "copy";
-    }
-    return "?";
-}
 
 } // namespace
 

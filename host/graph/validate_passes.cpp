@@ -13,18 +13,6 @@ namespace pl::graph {
 
 namespace {
 
-const char* kind_name(PassKind k) {
-    switch (k) {
-    case PassKind::fullscreen: return "fullscreen";
-    case PassKind::draw: return "draw";
-    case PassKind::compute: return "compute";
-    case PassKind::blit: return "blit";
-    case PassKind::mips: return "mips";
-    case PassKind::clear: return "clear";
-    case PassKind::copy: return "copy";
-    }
-    return "?";
-}
 
 // The keys each kind uses besides name, kind, enabled, repeat and swap. A key written on a kind
 // that ignores it is an error: `groups` on a fullscreen pass is a misunderstanding to point out,
