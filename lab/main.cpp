@@ -69,6 +69,10 @@ int main(int argc, char** argv) {
     run_cmd->add_option("--events", rn.events, "Write JSON-lines events (reloads, frames) to this file");
     run_cmd->add_option("--seconds", rn.seconds, "Quit after this many seconds")->check(CLI::NonNegativeNumber);
     run_cmd->add_option("--frames", rn.frames, "Quit after this many frames")->check(CLI::NonNegativeNumber);
+    run_cmd->add_flag("!--no-ui", rn.ui, "Start without the panel (Tab shows it)");
+    run_cmd->add_flag("!--no-sidecar", rn.sidecar, "Ignore saved param values (preset.params.toml)");
+    run_cmd->add_option("--inspect", rn.inspect, "Open the image viewer on this image");
+    run_cmd->add_option("--capture", rn.capture, "With --frames: save the last frame's window, panel included, to this PNG");
     add_common(run_cmd);
 
     BenchOptions bo;

@@ -1,15 +1,19 @@
-// `passlab run PRESET`: the live lab. A window shows the preset's output; every file the preset
-// read (TOML, shaders, includes, images) is watched, and a change rebuilds the graph off the
-// frame path. A failed rebuild keeps the last good executor rendering and prints the error;
-// `--events FILE` logs JSON lines (reload-started, reload-ok, reload-failed, frame-presented)
-// so tests can follow what happened.
+// `passlab run PRESET`: the live lab. A window shows the preset's output with a Dear ImGui
+// panel over it (panel.cpp); every file the preset read (TOML, shaders, includes, images) is
+// watched, and a change rebuilds the graph. A failed rebuild keeps the last good executor
+// rendering and shows the error in an overlay and the terminal; `--events FILE` logs JSON lines
+// (reload-started, reload-ok, reload-failed, frame-presented) so tests can follow what happened.
 #include "verbs.hpp"
 
+#include "events.hpp"
 #include "exec/build.hpp"
 #include "exec/executor.hpp"
+#include "exec/params.hpp"
 #include "image/image.hpp"
-#include "scene/camera.hpp"
+#include "overlay.hpp"
+#include "panel.hpp"
 #include "reload/watcher.hpp"
+#include "sidecar.hpp"
 #include "window.hpp"
 
 #include <GLFW/glfw3.h>
@@ -18,7 +22,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 
 namespace fs = std::filesystem;
 
@@ -26,50 +29,64 @@ namespace pl::lab {
 
 namespace {
 
-std::string json_string(const std::string& s) {
-    std::string o = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') o += '\\', o += c;
-        else if (c == '\n') o += "\\n";
-        else if (static_cast<unsigned char>(c) < 0x20) o += ' ';
-        else o += c;
-    }
-    return o + "\"";
+// Never overwrite: the first free passlab-screenshot-N.png in the working folder.
+void screenshot(exec::Executor& ex, int& counter) {
+    fs::path file;
+    do file = "passlab-screenshot-" + std::to_string(++counter) + ".png";
+    while (fs::exists(file));
+    auto img = ex.read(ex.graph().desc.output);
+    if (img && image::save_image(*img, file)) std::fprintf(stderr, "passlab: screenshot %s\n", file.string().c_str());
+    else std::fprintf(stderr, "passlab: screenshot failed\n");
 }
 
-class EventLog {
-  public:
-    explicit EventLog(const std::string& file) {
-        if (!file.empty()) out_.open(file, std::ios::trunc);
-        t0_ = std::chrono::steady_clock::now();
+// The panel's param edits outlive reloads: re-applied to every new executor where the param
+// still exists with the same type; the others are forgotten.
+void reapply_touched(LabState& s, exec::Executor& ex) {
+    for (auto it = s.touched.begin(); it != s.touched.end();) {
+        auto& params = ex.params();
+        auto p = std::find_if(params.begin(), params.end(), [&](const graph::ParamDesc& d) { return d.name == it->first; });
+        if (p == params.end()) {
+            it = s.touched.erase(it);
+            continue;
+        }
+        p->value = it->second;
+        ++it;
     }
-    double now_ms() const { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count(); }
-    void write(const std::string& event, const std::string& fields = "") {
-        if (!out_) return;
-        char t[64];
-        // wall_ms (Unix epoch) lets a benchmark relate events to the moment it edited a file.
-        auto wall = std::chrono::duration<double, std::milli>(std::chrono::system_clock::now().time_since_epoch()).count();
-        std::snprintf(t, sizeof t, "%.1f,\"wall_ms\":%.1f", now_ms(), wall);
-        out_ << "{\"event\":\"" << event << "\",\"t_ms\":" << t << (fields.empty() ? "" : "," + fields) << "}\n";
-        out_.flush();
-    }
+}
 
-  private:
-    std::ofstream out_;
-    std::chrono::steady_clock::time_point t0_;
-};
+// Saved values from the sidecar become "touched" values; `--set` on the command line wins.
+void apply_sidecar(LabState& s, exec::Executor& ex, const fs::path& file, const std::vector<std::string>& cli_sets) {
+    auto sets = load_sidecar(file);
+    if (!sets) {
+        std::fprintf(stderr, "passlab: ignoring %s: %s\n", file.string().c_str(), sets.error().format().c_str());
+        return;
+    }
+    if (sets->empty()) return;
+    for (const auto& a : *sets) {
+        std::string name = a.substr(0, a.find('='));
+        bool on_cli = std::any_of(cli_sets.begin(), cli_sets.end(), [&](const std::string& c) { return c.rfind(name + "=", 0) == 0; });
+        if (on_cli) continue;
+        if (auto st = exec::apply_param_override(ex.params(), a); !st) {
+            std::fprintf(stderr, "passlab: %s: ignoring '%s': %s\n", file.string().c_str(), a.c_str(), st.error().message.c_str());
+            continue;
+        }
+        for (const auto& p : ex.params())
+            if (p.name == name) s.touched[name] = p.value;
+    }
+    std::fprintf(stderr, "passlab: param values from %s (delete it, or --no-sidecar, for the preset's own)\n", file.string().c_str());
+}
 
 } // namespace
 
 int run(const RunOptions& o, const CommonOptions& c) {
     auto lp = resolve_and_configure(o.preset, o.size, o.set, c);
     if (!lp) return report(lp.error());
-    const auto toml = &lp->toml;
+    const fs::path toml = lp->toml;
     exec::BuildOptions& bo = lp->options;
     EventLog log(o.events);
 
     // The first build must succeed: there is no last good frame yet.
-    auto built = exec::build_graph(*toml, bo);
+    auto built = exec::build_graph(toml, bo);
     if (!built) return report(built.error());
     auto exts = init_glfw_and_list_extensions();
     if (!exts) return report(exts.error());
@@ -83,26 +100,36 @@ int run(const RunOptions& o, const CommonOptions& c) {
     VkPresentModeKHR mode = o.present == "mailbox" ? VK_PRESENT_MODE_MAILBOX_KHR
                             : o.present == "immediate" ? VK_PRESENT_MODE_IMMEDIATE_KHR
                                                        : VK_PRESENT_MODE_FIFO_KHR;
-    std::string title = "passlab — " + fs::proximate(toml->parent_path()).string();
+    const std::string preset_name = fs::proximate(toml.parent_path()).string();
+    const std::string title = "passlab — " + preset_name;
     auto window = Window::create(**ctx, built->view[0], built->view[1], title, mode);
     if (!window) return report(window.error());
+    auto overlay = Overlay::create(**ctx, **window);
+    if (!overlay) return report(overlay.error());
+    auto viewer = std::make_unique<ViewerTexture>(**ctx);
 
     reload::DirWatcher watcher;
     watcher.watch(built->dependencies);
     auto ex = exec::Executor::create(**ctx, std::move(built.value()));
     if (!ex) return report(ex.error());
     std::unique_ptr<exec::Executor> current = std::move(ex.value());
-    log.write("started", "\"preset\":" + json_string(toml->string()));
+    std::vector<graph::ParamDesc> base_params = current->params();  // preset.toml + --set: "Reset" returns here
+    log.write("started", "\"preset\":" + json_string(toml.string()));
+
+    LabState st;
+    st.time = o.time;
+    st.show_ui = o.ui;
+    st.show_viewer = !o.inspect.empty();
+    st.viewer_image = o.inspect;
+    const fs::path sidecar = sidecar_path(toml);
+    if (o.sidecar) apply_sidecar(st, *current, sidecar, o.set);
 
     auto last = std::chrono::steady_clock::now();
-    double sim_time = o.time;  // the frame clock: advances unless paused (space), steps with ->
-    bool paused = false;
     graph::OrbitCamera camera = current->graph().desc.view.orbit;
     glm::vec4 mouse(0.0f);
     int frame = 0, screenshots = 0;
-    bool broken = false;
     double elapsed = 0;
-    std::fprintf(stderr, "passlab: drag to orbit, wheel to zoom, space pause, -> step, F12 screenshot, Esc quit\n");
+    std::fprintf(stderr, "passlab: drag to orbit, wheel to zoom, space pause, -> step, F12 screenshot, Tab panel, F1 keys, Esc quit\n");
     while (!(*window)->should_close()) {
         (*window)->poll();
         auto now = std::chrono::steady_clock::now();
@@ -110,19 +137,30 @@ int run(const RunOptions& o, const CommonOptions& c) {
         last = now;
         elapsed += dt;
         if (o.seconds > 0 && elapsed >= o.seconds) break;
+        if (o.frames > 0 && frame >= o.frames) break;
+        st.frame_ms.push_back(static_cast<float>(dt * 1000.0));
+        if (st.frame_ms.size() > 240) st.frame_ms.pop_front();
 
         // Input: orbit camera, Shadertoy iMouse (xy while the button is down, zw = click
-        // position, negative once released), time controls, screenshots.
+        // position, negative once released), keys. What the panel is using is not the scene's.
         WindowInput input = (*window)->take_input();
-        camera.yaw -= static_cast<float>(input.drag_dx) * 0.3f;
-        camera.pitch = std::clamp(camera.pitch + static_cast<float>(input.drag_dy) * 0.3f, -89.0f, 89.0f);
-        camera.distance = std::clamp(camera.distance * static_cast<float>(std::pow(0.9, input.scroll)), 0.01f, 1e4f);
-        if (input.left) mouse = glm::vec4(input.x, input.y, input.click_x, input.click_y);
-        else mouse = glm::vec4(mouse.x, mouse.y, -std::fabs(mouse.z), -std::fabs(mouse.w));
-        if (input.pause_toggled) paused = !paused;
-        double delta = paused ? (input.step ? 1.0 / 60.0 : 0.0) : dt;
-        sim_time += delta;
-        if (o.frames > 0 && frame >= o.frames) break;
+        if (!(*overlay)->wants_mouse()) {
+            camera.yaw -= static_cast<float>(input.drag_dx) * 0.3f;
+            camera.pitch = std::clamp(camera.pitch + static_cast<float>(input.drag_dy) * 0.3f, -89.0f, 89.0f);
+            camera.distance = std::clamp(camera.distance * static_cast<float>(std::pow(0.9, input.scroll)), 0.01f, 1e4f);
+            if (input.left) mouse = glm::vec4(input.x, input.y, input.click_x, input.click_y);
+        }
+        if (!input.left) mouse = glm::vec4(mouse.x, mouse.y, -std::fabs(mouse.z), -std::fabs(mouse.w));
+        if (!(*overlay)->wants_keyboard()) {
+            if (input.pause_toggled) st.paused = !st.paused;
+            if (input.step) st.step = true;
+            if (input.screenshot) st.screenshot = true;
+            if (input.toggle_ui) st.show_ui = !st.show_ui;
+            if (input.toggle_help) st.show_help = !st.show_help;
+        }
+        double delta = st.paused ? (st.step ? 1.0 / 60.0 : 0.0) : dt * st.speed;
+        st.step = false;
+        st.time += delta;
 
         // Reload: collect a burst of changes, rebuild, swap only when everything built.
         auto changed = watcher.poll(std::chrono::milliseconds(0), std::chrono::milliseconds(15));
@@ -131,7 +169,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
             for (const auto& f : changed) files += (files.empty() ? "" : ",") + json_string(fs::proximate(f).string());
             log.write("reload-started", "\"files\":[" + files + "]");
             double t0 = log.now_ms();
-            auto next = exec::build_graph(*toml, bo);
+            auto next = exec::build_graph(toml, bo);
             Result<std::unique_ptr<exec::Executor>> next_ex = next ? exec::Executor::create(**ctx, std::move(next.value()))
                                                                    : Result<std::unique_ptr<exec::Executor>>(next.error());
             if (!next_ex) {
@@ -142,13 +180,15 @@ int run(const RunOptions& o, const CommonOptions& c) {
                                                ",\"col\":" + std::to_string(e.loc.col) + ",\"pass\":" + json_string(e.pass) +
                                                ",\"message\":" + json_string(e.message));
                 (*window)->set_title(title + " — ERROR " + e.loc.str() + ": " + e.message);
-                broken = true;
+                st.error = e;
                 if ((*ctx)->hung()) exit_after_hang(1);
             } else {
                 // The old executor is retired, not destroyed: it goes once the GPU work submitted
                 // so far has finished (Context::collect after the next frame's fence).
                 (*ctx)->retire(std::move(current));
                 current = std::move(next_ex.value());
+                base_params = current->params();
+                reapply_touched(st, *current);
                 watcher.watch(current->graph().dependencies);
                 std::string passes;
                 for (const auto& p : current->graph().passes) passes += (passes.empty() ? "" : ",") + json_string(p.desc->name);
@@ -156,14 +196,14 @@ int run(const RunOptions& o, const CommonOptions& c) {
                 std::snprintf(ms, sizeof ms, "%.1f", log.now_ms() - t0);
                 log.write("reload-ok", "\"passes\":[" + passes + "],\"ms\":" + ms);
                 std::fprintf(stderr, "passlab: reloaded in %s ms\n", ms);
-                if (broken) (*window)->set_title(title);
-                broken = false;
+                if (st.error) (*window)->set_title(title);
+                st.error.reset();
             }
         }
 
         exec::FrameInput in;
         in.index = frame;
-        in.time = sim_time;
+        in.time = st.time;
         in.delta = delta;
         in.camera = camera;
         in.mouse = mouse;
@@ -172,24 +212,46 @@ int run(const RunOptions& o, const CommonOptions& c) {
             if ((*ctx)->hung()) exit_after_hang(rc);
             return rc;
         }
-        std::string output = current->graph().desc.output;
-        if (input.screenshot) {
-            // Never overwrite: the first free passlab-screenshot-N.png in the working folder.
-            fs::path file;
-            do file = "passlab-screenshot-" + std::to_string(++screenshots) + ".png";
-            while (fs::exists(file));
-            auto img = current->read(output);
-            if (img && image::save_image(*img, file)) std::fprintf(stderr, "passlab: screenshot %s\n", file.string().c_str());
-            else std::fprintf(stderr, "passlab: screenshot failed\n");
+        if (st.screenshot) screenshot(*current, screenshots);
+        st.screenshot = false;
+        if (st.show_viewer) {
+            if (auto img = current->read(st.viewer_image.empty() ? current->graph().desc.output : st.viewer_image, st.viewer_mip,
+                                         st.viewer_layer)) {
+                viewer->update(*img, st.viewer_mapping);
+                st.viewer_pixels = std::move(*img);
+            }
         }
-        auto presented = (*window)->present([&](VkCommandBuffer cb, VkImage dst, VkExtent2D ext) {
-            return current->record_blit_to(cb, output, dst, ext);
-        });
-        if (!presented) return report(presented.error());
-        log.write("frame-presented", "\"frame\":" + std::to_string(frame) + ",\"broken\":" + (broken ? "true" : "false"));
+
+        (*overlay)->begin_frame();
+        draw_panel(st, *current, viewer.get(), preset_name);
+        (*overlay)->end_frame();
+        if (st.save_sidecar) {
+            auto s = save_sidecar(sidecar, current->params(), st.touched);
+            st.status = s ? "saved " + std::to_string(st.touched.size()) + " value(s) to " + sidecar.string()
+                          : "save failed: " + s.error().message;
+            std::fprintf(stderr, "passlab: %s\n", st.status.c_str());
+        }
+        if (!st.copy_line.empty()) std::fprintf(stderr, "passlab: %s\n", st.copy_line.c_str());
+        if (st.reset_params) current->params() = base_params, st.touched.clear();
+        if (st.reset_camera) camera = current->graph().desc.view.orbit;
+        st.save_sidecar = st.reset_params = st.reset_camera = false;
+        st.copy_line.clear();
+
+        const std::string output = current->graph().desc.output;
+        if (!o.capture.empty() && o.frames > 0 && frame == o.frames - 1) (*window)->capture_next(o.capture);
+        Window::Recorders rec;
+        rec.blit = [&](VkCommandBuffer cb, VkImage dst, VkExtent2D ext) {
+            if (!st.show_viewer || !viewer->ready()) return current->record_blit_to(cb, output, dst, ext);
+            viewer->record_blit(cb, dst, ext);
+            return ok_status();
+        };
+        rec.overlay = [&](VkCommandBuffer cb) { (*overlay)->record(cb); };
+        if (auto presented = (*window)->present(rec); !presented) return report(presented.error());
+        log.write("frame-presented", "\"frame\":" + std::to_string(frame) + ",\"broken\":" + (st.error ? "true" : "false"));
         ++frame;
     }
     current.reset();
+    overlay->reset();
     window->reset();
     glfwTerminate();
     return 0;

@@ -51,6 +51,10 @@ struct RunOptions {
     std::string events;  // --events FILE: JSON lines
     double seconds = 0;            // stop after this long (tests); 0 = until closed
     int frames = 0;                // stop after this many frames; 0 = until closed
+    bool ui = true;                // the Dear ImGui panel (Tab toggles it at run time)
+    bool sidecar = true;           // apply the saved param values (preset.params.toml)
+    std::string inspect;           // open the image viewer on this image
+    std::string capture;           // save the last frame's window (panel included) to this PNG
 };
 
 struct BenchOptions {

@@ -1,11 +1,13 @@
 #include "window.hpp"
 
+#include "image/image.hpp"
 #include "vk/check.hpp"
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <cstdio>
 
 namespace pl::lab {
 
@@ -65,6 +67,8 @@ Result<std::unique_ptr<Window>> Window::create(vk::Context& ctx, int width, int 
         if (key == GLFW_KEY_SPACE && action == GLFW_PRESS) in.pause_toggled = true;
         if (key == GLFW_KEY_RIGHT) in.step = true;
         if (key == GLFW_KEY_F12 && action == GLFW_PRESS) in.screenshot = true;
+        if (key == GLFW_KEY_TAB && action == GLFW_PRESS) in.toggle_ui = true;
+        if (key == GLFW_KEY_F1 && action == GLFW_PRESS) in.toggle_help = true;
         if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(gw, GLFW_TRUE);
     });
     if (glfwCreateWindowSurface(ctx.instance(), w->window_, nullptr, &w->surface_) != VK_SUCCESS) {
@@ -113,6 +117,8 @@ Window::~Window() {
 }
 
 void Window::destroy_swapchain() {
+    framebuffers_.clear();
+    views_.clear();
     if (swapchain_) vkDestroySwapchainKHR(ctx_.device(), swapchain_, nullptr);
     swapchain_ = VK_NULL_HANDLE;
     images_.clear();
@@ -150,7 +156,8 @@ Status Window::create_swapchain() {
                                  .imageColorSpace = chosen.colorSpace,
                                  .imageExtent = extent_,
                                  .imageArrayLayers = 1,
-                                 .imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                 .imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                               (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT),
                                  .imageSharingMode = VK_SHARING_MODE_EXCLUSIVE,
                                  .preTransform = caps.currentTransform,
                                  .compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR,
@@ -165,7 +172,80 @@ Status Window::create_swapchain() {
     vkGetSwapchainImagesKHR(ctx_.device(), swapchain_, &count, nullptr);
     images_.resize(count);
     vkGetSwapchainImagesKHR(ctx_.device(), swapchain_, &count, images_.data());
+    if (!render_pass_)
+        if (auto s = create_render_pass(); !s) return s;
+    for (VkImage image : images_) {
+        VkImageViewCreateInfo vci{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+                                  .image = image,
+                                  .viewType = VK_IMAGE_VIEW_TYPE_2D,
+                                  .format = format_,
+                                  .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1}};
+        VkImageView view;
+        VK_CHECK(vkCreateImageView(ctx_.device(), &vci, nullptr, &view));
+        views_.emplace_back(ctx_.device(), view);
+        VkFramebufferCreateInfo fci{.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO,
+                                    .renderPass = render_pass_,
+                                    .attachmentCount = 1,
+                                    .pAttachments = &view,
+                                    .width = extent_.width,
+                                    .height = extent_.height,
+                                    .layers = 1};
+        VkFramebuffer fb;
+        VK_CHECK(vkCreateFramebuffer(ctx_.device(), &fci, nullptr, &fb));
+        framebuffers_.emplace_back(ctx_.device(), fb);
+    }
     return ok_status();
+}
+
+// One subpass that loads the blitted frame and draws the overlay on top; it also performs the
+// final transition to PRESENT_SRC. A classic render pass (not dynamic rendering) because Dear
+// ImGui 1.86's Vulkan backend wants one at initialisation.
+Status Window::create_render_pass() {
+    VkAttachmentDescription att{.format = format_,
+                                .samples = VK_SAMPLE_COUNT_1_BIT,
+                                .loadOp = VK_ATTACHMENT_LOAD_OP_LOAD,
+                                .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+                                .stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE,
+                                .stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE,
+                                .initialLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                .finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR};
+    VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription sub{.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS, .colorAttachmentCount = 1, .pColorAttachments = &ref};
+    // The blit (transfer write) must land before the overlay blends over it.
+    VkSubpassDependency dep{.srcSubpass = VK_SUBPASS_EXTERNAL,
+                            .dstSubpass = 0,
+                            .srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT,
+                            .dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                            .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,
+                            .dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT};
+    VkRenderPassCreateInfo rci{.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO,
+                               .attachmentCount = 1,
+                               .pAttachments = &att,
+                               .subpassCount = 1,
+                               .pSubpasses = &sub,
+                               .dependencyCount = 1,
+                               .pDependencies = &dep};
+    VkRenderPass rp;
+    VK_CHECK(vkCreateRenderPass(ctx_.device(), &rci, nullptr, &rp));
+    render_pass_ = vk::UniqueRenderPass(ctx_.device(), rp);
+    return ok_status();
+}
+
+void Window::save_capture() {
+    image::Image img;
+    img.width = static_cast<int>(extent_.width);
+    img.height = static_cast<int>(extent_.height);
+    img.pixels.resize(size_t(img.width) * img.height * 4);
+    const auto* px = static_cast<const uint8_t*>(capture_buffer_.mapped);
+    const bool bgra = format_ == VK_FORMAT_B8G8R8A8_UNORM || format_ == VK_FORMAT_B8G8R8A8_SRGB;
+    for (size_t i = 0; i < size_t(img.width) * img.height; ++i) {
+        for (int c = 0; c < 3; ++c) img.pixels[i * 4 + c] = px[i * 4 + (bgra ? 2 - c : c)] / 255.0f;
+        img.pixels[i * 4 + 3] = 1.0f;
+    }
+    if (auto s = image::save_image(img, capture_file_); s) std::fprintf(stderr, "passlab: window captured to %s\n", capture_file_.c_str());
+    else std::fprintf(stderr, "passlab: window capture failed: %s\n", s.error().message.c_str());
+    capture_file_.clear();
+    capture_buffer_ = {};
 }
 
 bool Window::should_close() const { return glfwWindowShouldClose(window_); }
@@ -175,11 +255,11 @@ void Window::set_title(const std::string& t) { glfwSetWindowTitle(window_, t.c_s
 WindowInput Window::take_input() {
     WindowInput out = input_;
     input_.drag_dx = input_.drag_dy = input_.scroll = 0;
-    input_.pause_toggled = input_.step = input_.screenshot = false;
+    input_.pause_toggled = input_.step = input_.screenshot = input_.toggle_ui = input_.toggle_help = false;
     return out;
 }
 
-Status Window::present(const std::function<Status(VkCommandBuffer, VkImage, VkExtent2D)>& record) {
+Status Window::present(const Recorders& rec) {
     if (!swapchain_) {
         if (auto s = create_swapchain(); !s || !swapchain_) return s;
     }
@@ -218,10 +298,28 @@ Status Window::present(const std::function<Status(VkCommandBuffer, VkImage, VkEx
     vkCmdClearColorImage(cmd_, images_[index], VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &black, 1, &range);
     barrier(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
             VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-    Status st = record(cmd_, images_[index], extent_);
-    barrier(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0);
+    Status st = rec.blit ? rec.blit(cmd_, images_[index], extent_) : ok_status();
+    VkRenderPassBeginInfo rbi{.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO,
+                              .renderPass = render_pass_,
+                              .framebuffer = framebuffers_[index],
+                              .renderArea = {{0, 0}, extent_}};
+    vkCmdBeginRenderPass(cmd_, &rbi, VK_SUBPASS_CONTENTS_INLINE);
+    if (rec.overlay) rec.overlay(cmd_);
+    vkCmdEndRenderPass(cmd_);
+    bool capture = !capture_file_.empty();
+    if (capture) {
+        // Read the finished frame back: PRESENT_SRC -> TRANSFER_SRC, copy, and back.
+        capture_buffer_ = vk::create_buffer(ctx_, VkDeviceSize(extent_.width) * extent_.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+        barrier(VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1}, .imageExtent = {extent_.width, extent_.height, 1}};
+        vkCmdCopyImageToBuffer(cmd_, images_[index], VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, capture_buffer_.buffer, 1, &region);
+        barrier(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, 0,
+                VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0);
+    }
     VK_CHECK(vkEndCommandBuffer(cmd_));
+    // The first use of the acquired image is the transfer (clear, blit); the overlay's
+    // attachment access is ordered after it by the render pass dependency.
     VkPipelineStageFlags wait_stage = VK_PIPELINE_STAGE_TRANSFER_BIT;
     VkSemaphore wait = acquired_, signal = rendered_;
     VkSubmitInfo si{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO,
@@ -243,6 +341,7 @@ Status Window::present(const std::function<Status(VkCommandBuffer, VkImage, VkEx
     r = vkQueuePresentKHR(ctx_.queue(), &pi);
     if (auto w = ctx_.wait(f, std::chrono::seconds(20), "present"); !w) return w;
     VK_CHECK(vkResetFences(ctx_.device(), 1, &f));
+    if (capture) save_capture();
     if (r == VK_ERROR_OUT_OF_DATE_KHR || r == VK_SUBOPTIMAL_KHR) {
         vkDeviceWaitIdle(ctx_.device());
         if (auto s = create_swapchain(); !s) return s;

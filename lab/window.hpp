@@ -4,6 +4,7 @@
 
 #include "util/error.hpp"
 #include "vk/context.hpp"
+#include "vk/resources.hpp"
 
 #include <functional>
 #include <memory>
@@ -24,7 +25,7 @@ struct WindowInput {
     double click_x = 0, click_y = 0;    // where the left button last went down
     double drag_dx = 0, drag_dy = 0;    // cursor motion while held, since the last take()
     double scroll = 0;                  // wheel steps since the last take()
-    bool pause_toggled = false, step = false, screenshot = false;
+    bool pause_toggled = false, step = false, screenshot = false, toggle_ui = false, toggle_help = false;
 };
 
 class Window {
@@ -35,10 +36,24 @@ class Window {
 
     bool should_close() const;
     void poll();
-    // Acquires a swapchain image, lets `record` fill it (it arrives in TRANSFER_DST layout),
-    // and presents. Recreates the swapchain when the window size changed.
-    Status present(const std::function<Status(VkCommandBuffer, VkImage, VkExtent2D)>& record);
+    // What a frame records into the swapchain image's command buffer.
+    struct Recorders {
+        // Fills the image, which arrives cleared in TRANSFER_DST layout (the graph's output blit).
+        std::function<Status(VkCommandBuffer, VkImage, VkExtent2D)> blit;
+        // Draws inside a render pass over the image that loads its contents (the UI).
+        std::function<void(VkCommandBuffer)> overlay;
+    };
+    // Acquires a swapchain image, records the frame, presents. Recreates the swapchain when the
+    // window size changed.
+    Status present(const Recorders& r);
+    // The render pass the overlay draws in (fixed for the window's life) and swapchain facts the
+    // UI backend needs.
+    VkRenderPass render_pass() const { return render_pass_; }
+    uint32_t image_count() const { return static_cast<uint32_t>(images_.size()); }
+    GLFWwindow* handle() const { return window_; }
     void set_title(const std::string& t);
+    // Saves the next presented frame, overlay included, as a PNG (UI screenshots, tests).
+    void capture_next(const std::string& png) { capture_file_ = png; }
     // The input since the last call (motion, wheel and key presses are consumed).
     WindowInput take_input();
     WindowInput& input() { return input_; }
@@ -46,6 +61,8 @@ class Window {
   private:
     Window(vk::Context& ctx) : ctx_(ctx) {}
     Status create_swapchain();
+    Status create_render_pass();
+    void save_capture();
     void destroy_swapchain();
     vk::Context& ctx_;
     GLFWwindow* window_ = nullptr;
@@ -55,11 +72,16 @@ class Window {
     VkFormat format_ = VK_FORMAT_B8G8R8A8_UNORM;
     VkExtent2D extent_{0, 0};
     std::vector<VkImage> images_;
+    std::vector<vk::UniqueImageView> views_;
+    std::vector<vk::UniqueFramebuffer> framebuffers_;
+    vk::UniqueRenderPass render_pass_;
     vk::UniqueCommandPool pool_;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     vk::UniqueSemaphore acquired_, rendered_;
     vk::UniqueFence fence_;
     WindowInput input_;
+    std::string capture_file_;
+    vk::Buffer capture_buffer_;
 };
 
 } // namespace pl::lab

@@ -53,6 +53,10 @@ class Executor {
     Status record_blit_to(VkCommandBuffer cb, const std::string& image, VkImage dst, VkExtent2D dst_extent);
 
     const CompiledGraph& graph() const { return *graph_; }
+    // Param values are read every frame, so the live lab's panel edits them here directly.
+    std::vector<graph::ParamDesc>& params() { return graph_->desc.params; }
+    // The graph's images as created (extent, mips, layers, samples), for inspection.
+    const GraphResources& resources() const { return res_; }
     const std::vector<PassTiming>& timings() const { return timings_; }
     void set_timeout(std::chrono::milliseconds t) { timeout_ = t; }
     // Per-pass GPU timestamps cost time on some drivers (lavapipe waits for the work before a

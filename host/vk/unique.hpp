@@ -57,6 +57,8 @@ using UniqueCommandPool = Unique<VkCommandPool, vkDestroyCommandPool>;
 using UniqueFence = Unique<VkFence, vkDestroyFence>;
 using UniqueSemaphore = Unique<VkSemaphore, vkDestroySemaphore>;
 using UniqueQueryPool = Unique<VkQueryPool, vkDestroyQueryPool>;
+using UniqueRenderPass = Unique<VkRenderPass, vkDestroyRenderPass>;
+using UniqueFramebuffer = Unique<VkFramebuffer, vkDestroyFramebuffer>;
 // clang-format on
 
 } // namespace pl::vk

@@ -1,0 +1,98 @@
+#include "overlay.hpp"
+
+#include "vk/check.hpp"
+#include "window.hpp"
+
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_vulkan.h>
+
+namespace pl::lab {
+
+Result<std::unique_ptr<Overlay>> Overlay::create(vk::Context& ctx, Window& window) {
+    std::unique_ptr<Overlay> o(new Overlay(ctx));
+    VkDevice dev = ctx.device();
+    // The backend needs one set, for its font atlas.
+    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
+    VkDescriptorPoolCreateInfo dci{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
+                                   .flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT,
+                                   .maxSets = 1,
+                                   .poolSizeCount = 1,
+                                   .pPoolSizes = &size};
+    VkDescriptorPool pool;
+    VK_CHECK(vkCreateDescriptorPool(dev, &dci, nullptr, &pool));
+    o->pool_ = vk::UniqueDescriptorPool(dev, pool);
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    o->imgui_ = true;
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // never write imgui.ini into the user's working folder
+    ImGui::StyleColorsDark();
+    ImGui::GetStyle().Alpha = 0.94f;
+    // install_callbacks = true chains the window's own GLFW callbacks (orbit, keys).
+    if (!ImGui_ImplGlfw_InitForVulkan(window.handle(), true)) return make_error("cannot initialise the ImGui GLFW backend");
+    o->glfw_ = true;
+    ImGui_ImplVulkan_InitInfo ii{};
+    ii.Instance = ctx.instance();
+    ii.PhysicalDevice = ctx.physical();
+    ii.Device = dev;
+    ii.QueueFamily = ctx.queue_family();
+    ii.Queue = ctx.queue();
+    ii.DescriptorPool = pool;
+    ii.MinImageCount = 2;
+    ii.ImageCount = std::max(2u, window.image_count());
+    ii.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+    if (!ImGui_ImplVulkan_Init(&ii, window.render_pass())) return make_error("cannot initialise the ImGui Vulkan backend");
+    o->vulkan_ = true;
+
+    // Font atlas upload: one command buffer, submitted and waited for here, once.
+    VkCommandPoolCreateInfo pci{.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO, .queueFamilyIndex = ctx.queue_family()};
+    VkCommandPool cp;
+    VK_CHECK(vkCreateCommandPool(dev, &pci, nullptr, &cp));
+    vk::UniqueCommandPool cmd_pool(dev, cp);
+    VkCommandBufferAllocateInfo ai{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
+                                   .commandPool = cp,
+                                   .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
+                                   .commandBufferCount = 1};
+    VkCommandBuffer cb;
+    VK_CHECK(vkAllocateCommandBuffers(dev, &ai, &cb));
+    VkCommandBufferBeginInfo bi{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+                                .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+    VK_CHECK(vkBeginCommandBuffer(cb, &bi));
+    ImGui_ImplVulkan_CreateFontsTexture(cb);
+    VK_CHECK(vkEndCommandBuffer(cb));
+    VkFenceCreateInfo fci{.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence f;
+    VK_CHECK(vkCreateFence(dev, &fci, nullptr, &f));
+    vk::UniqueFence fence(dev, f);
+    VkSubmitInfo si{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO, .commandBufferCount = 1, .pCommandBuffers = &cb};
+    VK_CHECK(vkQueueSubmit(ctx.queue(), 1, &si, f));
+    if (auto w = ctx.wait(f, std::chrono::seconds(20), "ImGui font upload"); !w) return w.error();
+    ImGui_ImplVulkan_DestroyFontUploadObjects();
+    return o;
+}
+
+Overlay::~Overlay() {
+    if (ctx_.device() && !ctx_.hung()) vkDeviceWaitIdle(ctx_.device());
+    if (vulkan_) ImGui_ImplVulkan_Shutdown();
+    if (glfw_) ImGui_ImplGlfw_Shutdown();
+    if (imgui_) ImGui::DestroyContext();
+}
+
+void Overlay::begin_frame() {
+    ImGui_ImplVulkan_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+}
+
+void Overlay::end_frame() { ImGui::Render(); }
+
+void Overlay::record(VkCommandBuffer cb) {
+    if (ImDrawData* d = ImGui::GetDrawData()) ImGui_ImplVulkan_RenderDrawData(d, cb);
+}
+
+bool Overlay::wants_mouse() const { return ImGui::GetIO().WantCaptureMouse; }
+bool Overlay::wants_keyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
+
+} // namespace pl::lab

@@ -1,0 +1,249 @@
+#include "panel.hpp"
+
+#include "sidecar.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace pl::lab {
+
+namespace {
+
+using graph::ParamType;
+
+// A slider needs a range; params without one get a drag widget instead (unbounded).
+bool param_widget(graph::ParamDesc& p) {
+    const char* label = p.name.c_str();
+    float f[4];
+    for (int i = 0; i < 4; ++i) f[i] = static_cast<float>(p.value[static_cast<size_t>(i)]);
+    bool ranged = p.min && p.max && *p.min < *p.max;
+    float lo = ranged ? static_cast<float>(*p.min) : 0.0f, hi = ranged ? static_cast<float>(*p.max) : 0.0f;
+    // Log sliders spread decades evenly (roughness 0.001..1, exposure, frequencies).
+    ImGuiSliderFlags flags = p.log ? ImGuiSliderFlags_Logarithmic : 0;
+    bool changed = false;
+    switch (p.type) {
+    case ParamType::boolean: {
+        bool b = p.value[0] != 0.0;
+        changed = ImGui::Checkbox(label, &b);
+        f[0] = b ? 1.0f : 0.0f;
+        break;
+    }
+    case ParamType::enumeration: {
+        int i = static_cast<int>(p.value[0]);
+        if (ImGui::BeginCombo(label, i >= 0 && i < static_cast<int>(p.options.size()) ? p.options[static_cast<size_t>(i)].c_str() : "?")) {
+            for (int k = 0; k < static_cast<int>(p.options.size()); ++k)
+                if (ImGui::Selectable(p.options[static_cast<size_t>(k)].c_str(), k == i)) i = k, changed = true;
+            ImGui::EndCombo();
+        }
+        f[0] = static_cast<float>(i);
+        break;
+    }
+    case ParamType::i32: {
+        int i = static_cast<int>(p.value[0]);
+        changed = ranged ? ImGui::SliderInt(label, &i, static_cast<int>(lo), static_cast<int>(hi))
+                         : ImGui::DragInt(label, &i, 0.2f);
+        f[0] = static_cast<float>(i);
+        break;
+    }
+    case ParamType::color3: changed = ImGui::ColorEdit3(label, f, ImGuiColorEditFlags_Float); break;
+    case ParamType::color4: changed = ImGui::ColorEdit4(label, f, ImGuiColorEditFlags_Float); break;
+    default: {
+        int n = p.components();
+        if (ranged) {
+            changed = n == 1   ? ImGui::SliderFloat(label, f, lo, hi, "%.4g", flags)
+                      : n == 2 ? ImGui::SliderFloat2(label, f, lo, hi, "%.3g", flags)
+                      : n == 3 ? ImGui::SliderFloat3(label, f, lo, hi, "%.3g", flags)
+                               : ImGui::SliderFloat4(label, f, lo, hi, "%.3g", flags);
+        } else {
+            // Speed proportional to the magnitude so both 0.01 and 100 are draggable.
+            float speed = std::max(0.001f, std::fabs(f[0]) * 0.01f);
+            changed = n == 1   ? ImGui::DragFloat(label, f, speed, 0, 0, "%.4g")
+                      : n == 2 ? ImGui::DragFloat2(label, f, speed, 0, 0, "%.3g")
+                      : n == 3 ? ImGui::DragFloat3(label, f, speed, 0, 0, "%.3g")
+                               : ImGui::DragFloat4(label, f, speed, 0, 0, "%.3g");
+        }
+    }
+    }
+    if (!p.doc.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p.doc.c_str());
+    if (changed)
+        for (int i = 0; i < 4; ++i) p.value[static_cast<size_t>(i)] = f[i];
+    return changed;
+}
+
+void params_section(LabState& s, exec::Executor& ex, const std::string& preset) {
+    auto& params = ex.params();
+    if (params.empty()) {
+        ImGui::TextDisabled("this preset has no [params]");
+        return;
+    }
+    for (auto& p : params)
+        if (param_widget(p)) s.touched[p.name] = p.value;
+    if (ImGui::Button("Copy as --set")) {
+        s.copy_line = "passlab render " + preset + set_arguments(ex, s);
+        ImGui::SetClipboardText(s.copy_line.c_str());
+        s.status = "copied: " + s.copy_line;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the command line that renders these values");
+    ImGui::SameLine();
+    if (ImGui::Button("Save")) s.save_sidecar = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("save to a sidecar file the next `passlab run` applies (preset.toml is never written)");
+    ImGui::SameLine();
+    if (ImGui::Button("Reset")) s.reset_params = true;
+}
+
+void time_section(LabState& s) {
+    ImGui::Checkbox("pause (space)", &s.paused);
+    ImGui::SameLine();
+    if (ImGui::Button("step (->)")) s.step = true;
+    float t = static_cast<float>(s.time);
+    if (ImGui::DragFloat("time", &t, 0.01f, 0.0f, 0.0f, "%.3f s")) s.time = t;  // scrub
+    ImGui::SliderFloat("speed", &s.speed, 0.0f, 4.0f, "%.2fx");
+    if (ImGui::Button("reset camera")) s.reset_camera = true;
+    ImGui::SameLine();
+    if (ImGui::Button("screenshot (F12)")) s.screenshot = true;
+}
+
+void passes_section(LabState& s, const exec::Executor& ex) {
+    const auto& g = ex.graph();
+    double total = 0;
+    if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+        ImGui::TableSetupColumn("pass");
+        ImGui::TableSetupColumn("kind");
+        ImGui::TableSetupColumn("GPU ms");
+        ImGui::TableHeadersRow();
+        for (size_t i : g.order) {
+            const auto& pd = *g.passes[i].desc;
+            double ms = 0;
+            for (const auto& t : ex.timings())
+                if (t.name == pd.name) ms = t.gpu_ms;
+            total += ms;
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(pd.name.c_str());
+            ImGui::TableNextColumn();
+            ImGui::TextDisabled("%s", graph::kind_name(pd.kind));
+            ImGui::TableNextColumn();
+            ImGui::Text("%7.3f", ms);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::Text("GPU total %.2f ms", total);
+    if (!s.frame_ms.empty()) {
+        std::vector<float> v(s.frame_ms.begin(), s.frame_ms.end());
+        float mx = *std::max_element(v.begin(), v.end());
+        char label[64];
+        std::snprintf(label, sizeof label, "CPU frame %.1f ms", v.back());
+        ImGui::PlotLines("##frame", v.data(), static_cast<int>(v.size()), 0, label, 0.0f, mx * 1.2f, ImVec2(0, 60));
+    }
+}
+
+void viewer_section(LabState& s, const exec::Executor& ex) {
+    ImGui::Checkbox("show in the window", &s.show_viewer);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the window shows this image instead of the output; hover it for texel values");
+    const auto& images = ex.resources().images;
+    if (s.viewer_image.empty() || !images.count(s.viewer_image)) s.viewer_image = ex.graph().desc.output;
+    if (ImGui::BeginCombo("image", s.viewer_image.c_str())) {
+        for (const auto& [name, gi] : images) {
+            if (gi.phys[0] && gi.phys[0]->image.info().samples != VK_SAMPLE_COUNT_1_BIT) continue;  // read its resolve
+            if (ImGui::Selectable(name.c_str(), name == s.viewer_image)) s.viewer_image = name, s.viewer_mip = s.viewer_layer = 0;
+        }
+        ImGui::EndCombo();
+    }
+    auto it = images.find(s.viewer_image);
+    if (it == images.end()) return;
+    const auto& gi = it->second;
+    bool is3d = gi.desc && gi.desc->kind == graph::ImageKind::tex3d;
+    int mips = static_cast<int>(gi.mips), layers = static_cast<int>(is3d ? gi.extent.depth : gi.layers);
+    if (mips > 1) ImGui::SliderInt("mip", &s.viewer_mip, 0, mips - 1);
+    if (layers > 1) ImGui::SliderInt(is3d ? "slice" : (layers == 6 ? "layer / face" : "layer"), &s.viewer_layer, 0, layers - 1);
+    s.viewer_mip = std::clamp(s.viewer_mip, 0, mips - 1);
+    s.viewer_layer = std::clamp(s.viewer_layer, 0, std::max(0, (is3d ? std::max(1, layers >> s.viewer_mip) : layers) - 1));
+    const char* channels[] = {"RGB", "R", "G", "B", "A"};
+    ImGui::Combo("channel", &s.viewer_mapping.channel, channels, 5);
+    ImGui::SliderFloat("exposure EV", &s.viewer_mapping.exposure_ev, -10.0f, 10.0f, "%+.1f");
+    ImGui::Checkbox("encode sRGB for display", &s.viewer_mapping.encode_srgb);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("on for linear (float/unorm) data, off for images that already hold sRGB-encoded values");
+    ImGui::TextDisabled("%ux%u, %u mip(s), %u layer(s), %s", gi.extent.width, gi.extent.height, gi.mips, gi.layers,
+                        gi.desc ? gi.desc->format.c_str() : "");
+}
+
+// The viewer fills the window: the texel under the cursor, with its float value, as a tooltip.
+void viewer_hover(const LabState& s, const ViewerTexture& v) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantCaptureMouse) return;
+    float fx = io.DisplayFramebufferScale.x, fy = io.DisplayFramebufferScale.y;
+    FitRect r = fit_rect(v.width(), v.height(), static_cast<int>(io.DisplaySize.x * fx), static_cast<int>(io.DisplaySize.y * fy));
+    int x = static_cast<int>((io.MousePos.x * fx - r.x) / r.scale), y = static_cast<int>((io.MousePos.y * fy - r.y) / r.scale);
+    const image::Image& px = s.viewer_pixels;
+    if (x < 0 || y < 0 || x >= px.width || y >= px.height) return;
+    const float* c = px.at(x, y);
+    ImGui::SetTooltip("%s mip %d layer %d  (%d, %d)\n%.5g  %.5g  %.5g  %.5g", s.viewer_image.c_str(), s.viewer_mip, s.viewer_layer, x, y,
+                      c[0], c[1], c[2], c[3]);
+}
+
+void error_overlay(const Error& e) {
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y - 10), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+    // Full width: the source line and its caret must not wrap (they are aligned by column).
+    ImGui::SetNextWindowSizeConstraints(ImVec2(vp->Size.x - 20, 0), ImVec2(vp->Size.x - 20, vp->Size.y * 0.6f));
+    ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.25f, 0.02f, 0.02f, 0.92f));
+    ImGui::Begin("Reload failed: showing the last good frame", nullptr,
+                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing |
+                     ImGuiWindowFlags_HorizontalScrollbar);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.7f, 1.0f));
+    // The same text the terminal shows: file:line:col, pass, resource, the source line, a caret.
+    ImGui::TextUnformatted(e.format().c_str());
+    ImGui::PopStyleColor();
+    ImGui::TextDisabled("fix the file and save: the overlay clears on the next good build");
+    ImGui::End();
+    ImGui::PopStyleColor();
+}
+
+void help_window(LabState& s) {
+    ImGui::Begin("Keys", &s.show_help, ImGuiWindowFlags_AlwaysAutoResize);
+    const char* rows[][2] = {{"drag", "orbit the camera"},       {"wheel", "zoom"},
+                             {"space", "pause / resume time"},   {"->", "step one frame (1/60 s) while paused"},
+                             {"F12", "screenshot (PNG, never overwrites)"}, {"Tab", "hide / show the panel"},
+                             {"F1", "this help"},                {"Esc", "quit"}};
+    for (auto& r : rows) {
+        ImGui::TextUnformatted(r[0]);
+        ImGui::SameLine(80);
+        ImGui::TextDisabled("%s", r[1]);
+    }
+    ImGui::End();
+}
+
+} // namespace
+
+std::string set_arguments(const exec::Executor& ex, const LabState& s) {
+    std::string out;
+    for (const auto& p : ex.graph().desc.params) {
+        auto it = s.touched.find(p.name);
+        if (it != s.touched.end()) out += " --set " + p.name + "=" + format_param_value(p, it->second);
+    }
+    return out;
+}
+
+void draw_panel(LabState& s, exec::Executor& ex, const ViewerTexture* viewer, const std::string& preset) {
+    if (s.error) error_overlay(*s.error);
+    if (s.show_help) help_window(s);
+    if (!s.show_ui) return;
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
+    ImGui::Begin("passlab");
+    ImGui::TextDisabled("%s", preset.c_str());
+    if (ImGui::CollapsingHeader("Params", ImGuiTreeNodeFlags_DefaultOpen)) params_section(s, ex, preset);
+    if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) time_section(s);
+    if (ImGui::CollapsingHeader("Passes", ImGuiTreeNodeFlags_DefaultOpen)) passes_section(s, ex);
+    if (ImGui::CollapsingHeader("Images")) viewer_section(s, ex);
+    if (!s.status.empty()) ImGui::TextWrapped("%s", s.status.c_str());
+    ImGui::TextDisabled("F1 keys, Tab hides this panel");
+    ImGui::End();
+
+    if (s.show_viewer && viewer && viewer->ready()) viewer_hover(s, *viewer);
+}
+
+} // namespace pl::lab
