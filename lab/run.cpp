@@ -22,6 +22,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <future>
+#include <optional>
 
 namespace fs = std::filesystem;
 
@@ -76,6 +78,24 @@ void apply_sidecar(LabState& s, exec::Executor& ex, const fs::path& file, const 
     std::fprintf(stderr, "passlab: param values from %s (delete it, or --no-sidecar, for the preset's own)\n", file.string().c_str());
 }
 
+// build_graph (parse, include expansion, glslang, reflection: no device) on a worker thread, so
+// frames keep coming while a reload compiles.
+struct BackgroundBuild {
+    std::future<Result<exec::CompiledGraph>> future;
+    double t0 = 0;       // when the reload started (EventLog ms)
+    bool again = false;  // files changed during the build
+
+    bool busy() const { return future.valid(); }
+    void start(const fs::path& toml, const exec::BuildOptions& bo, double t_start) {
+        t0 = t_start;
+        future = std::async(std::launch::async, [toml, bo] { return exec::build_graph(toml, bo); });
+    }
+    std::optional<Result<exec::CompiledGraph>> take() {
+        if (!future.valid() || future.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return std::nullopt;
+        return future.get();
+    }
+};
+
 } // namespace
 
 int run(const RunOptions& o, const CommonOptions& c) {
@@ -109,8 +129,11 @@ int run(const RunOptions& o, const CommonOptions& c) {
     auto viewer = std::make_unique<ViewerTexture>(**ctx);
 
     reload::DirWatcher watcher;
+    exec::PipelineCache pipelines;  // unchanged passes keep their pipeline across reloads
+    BackgroundBuild reload;
+    bool first_new_frame = false;
     watcher.watch(built->dependencies);
-    auto ex = exec::Executor::create(**ctx, std::move(built.value()));
+    auto ex = exec::Executor::create(**ctx, std::move(built.value()), &pipelines);
     if (!ex) return report(ex.error());
     std::unique_ptr<exec::Executor> current = std::move(ex.value());
     std::vector<graph::ParamDesc> base_params = current->params();  // preset.toml + --set: "Reset" returns here
@@ -162,42 +185,62 @@ int run(const RunOptions& o, const CommonOptions& c) {
         st.step = false;
         st.time += delta;
 
-        // Reload: collect a burst of changes, rebuild, swap only when everything built.
+        // Reload: collect a burst of changes and compile them on a worker thread while the last
+        // good graph keeps rendering; swap only when everything built.
         auto changed = watcher.poll(std::chrono::milliseconds(0), std::chrono::milliseconds(15));
         if (!changed.empty()) {
             std::string files;
             for (const auto& f : changed) files += (files.empty() ? "" : ",") + json_string(fs::proximate(f).string());
             log.write("reload-started", "\"files\":[" + files + "]");
-            double t0 = log.now_ms();
-            auto next = exec::build_graph(toml, bo);
-            Result<std::unique_ptr<exec::Executor>> next_ex = next ? exec::Executor::create(**ctx, std::move(next.value()))
-                                                                   : Result<std::unique_ptr<exec::Executor>>(next.error());
-            if (!next_ex) {
-                const Error& e = next_ex.error();
-                std::fputs(e.format().c_str(), stderr);
-                std::fprintf(stderr, "passlab: keeping the last good frame\n");
-                log.write("reload-failed", "\"file\":" + json_string(e.loc.file) + ",\"line\":" + std::to_string(e.loc.line) +
-                                               ",\"col\":" + std::to_string(e.loc.col) + ",\"pass\":" + json_string(e.pass) +
-                                               ",\"message\":" + json_string(e.message));
-                (*window)->set_title(title + " — ERROR " + e.loc.str() + ": " + e.message);
-                st.error = e;
-                if ((*ctx)->hung()) exit_after_hang(1);
+            if (reload.busy()) reload.again = true;  // edited while compiling: compile once more after
+            else reload.start(toml, bo, log.now_ms());
+        }
+        if (auto next = reload.take()) {
+            if (reload.again) {
+                // The result is already stale: the files changed while it compiled.
+                reload.again = false;
+                reload.start(toml, bo, reload.t0);
             } else {
-                // The old executor is retired, not destroyed: it goes once the GPU work submitted
-                // so far has finished (Context::collect after the next frame's fence).
-                (*ctx)->retire(std::move(current));
-                current = std::move(next_ex.value());
-                base_params = current->params();
-                reapply_touched(st, *current);
-                watcher.watch(current->graph().dependencies);
-                std::string passes;
-                for (const auto& p : current->graph().passes) passes += (passes.empty() ? "" : ",") + json_string(p.desc->name);
-                char ms[32];
-                std::snprintf(ms, sizeof ms, "%.1f", log.now_ms() - t0);
-                log.write("reload-ok", "\"passes\":[" + passes + "],\"ms\":" + ms);
-                std::fprintf(stderr, "passlab: reloaded in %s ms\n", ms);
-                if (st.error) (*window)->set_title(title);
-                st.error.reset();
+                double t_compiled = log.now_ms();
+                Result<std::unique_ptr<exec::Executor>> next_ex =
+                    *next ? exec::Executor::create(**ctx, std::move(next->value()), &pipelines)
+                          : Result<std::unique_ptr<exec::Executor>>(next->error());
+                if (next_ex)
+                    if (auto a = (*next_ex)->adopt_contents(*current); !a) next_ex = a.error();
+                if (!next_ex) {
+                    const Error& e = next_ex.error();
+                    std::fputs(e.format().c_str(), stderr);
+                    std::fprintf(stderr, "passlab: keeping the last good frame\n");
+                    log.write("reload-failed", "\"file\":" + json_string(e.loc.file) + ",\"line\":" + std::to_string(e.loc.line) +
+                                                   ",\"col\":" + std::to_string(e.loc.col) + ",\"pass\":" + json_string(e.pass) +
+                                                   ",\"message\":" + json_string(e.message));
+                    (*window)->set_title(title + " — ERROR " + e.loc.str() + ": " + e.message);
+                    st.error = e;
+                    if ((*ctx)->hung()) exit_after_hang(1);
+                } else {
+                    // The old executor is retired, not destroyed: it goes once the GPU work
+                    // submitted so far has finished (Context::collect after the next frame's fence).
+                    (*ctx)->retire(std::move(current));
+                    current = std::move(next_ex.value());
+                    base_params = current->params();
+                    reapply_touched(st, *current);
+                    watcher.watch(current->graph().dependencies);
+                    auto names = [](const std::vector<std::string>& v) {
+                        std::string o;
+                        for (const auto& n : v) o += (o.empty() ? "" : ",") + json_string(n);
+                        return o;
+                    };
+                    std::vector<std::string> all;
+                    for (const auto& p : current->graph().passes) all.push_back(p.desc->name);
+                    char ms[96];
+                    std::snprintf(ms, sizeof ms, "\"ms\":%.1f,\"compile_ms\":%.1f", log.now_ms() - reload.t0, t_compiled - reload.t0);
+                    log.write("reload-ok", "\"passes\":[" + names(all) + "],\"rebuilt\":[" + names(current->rebuilt_passes()) + "]," + ms);
+                    std::fprintf(stderr, "passlab: reloaded in %.1f ms (%zu of %zu pipelines rebuilt)\n", log.now_ms() - reload.t0,
+                                 current->rebuilt_passes().size(), all.size());
+                    if (st.error) (*window)->set_title(title);
+                    st.error.reset();
+                    first_new_frame = true;
+                }
             }
         }
 
@@ -247,7 +290,9 @@ int run(const RunOptions& o, const CommonOptions& c) {
         };
         rec.overlay = [&](VkCommandBuffer cb) { (*overlay)->record(cb); };
         if (auto presented = (*window)->present(rec); !presented) return report(presented.error());
-        log.write("frame-presented", "\"frame\":" + std::to_string(frame) + ",\"broken\":" + (st.error ? "true" : "false"));
+        log.write("frame-presented", "\"frame\":" + std::to_string(frame) + ",\"broken\":" + (st.error ? "true" : "false") +
+                                         (first_new_frame ? ",\"first_after_reload\":true" : ""));
+        first_new_frame = false;
         ++frame;
     }
     current.reset();

@@ -40,13 +40,13 @@ Executor::~Executor() {
     if (ctx_.hung()) {
         // Objects the running shader uses must outlive it: give them up instead of destroying.
         new GraphResources(std::move(res_));
-        new std::vector<PassPipeline>(std::move(pipelines_));
+        new std::vector<std::shared_ptr<PassPipeline>>(std::move(pipelines_));
         return;
     }
     if (ctx_.device()) vkDeviceWaitIdle(ctx_.device());
 }
 
-Result<std::unique_ptr<Executor>> Executor::create(vk::Context& ctx, CompiledGraph graph) {
+Result<std::unique_ptr<Executor>> Executor::create(vk::Context& ctx, CompiledGraph graph, PipelineCache* cache) {
     std::unique_ptr<Executor> ex(new Executor(ctx));
     ex->graph_ = std::make_unique<CompiledGraph>(std::move(graph));
     CompiledGraph& g = *ex->graph_;
@@ -60,10 +60,12 @@ Result<std::unique_ptr<Executor>> Executor::create(vk::Context& ctx, CompiledGra
     uint32_t max_sets = 0;
     for (const auto& cp : g.passes) {
         ctx.set_label("pass '" + cp.desc->name + "' (pipeline)");
-        auto pp = create_pass_pipeline(ctx, g, cp, ex->res_);
+        bool reused = false;
+        auto pp = create_pass_pipeline(ctx, g, cp, ex->res_, cache, &reused);
         if (!pp) return pp.error();
+        if (!reused && (*pp)->pipeline) ex->rebuilt_.push_back(cp.desc->name);
         for (const auto& b : cp.program.reflection.bindings) counts[descriptor_type(b.type)] += b.count * cp.repeat;
-        max_sets += static_cast<uint32_t>(pp->set_layouts.size()) * cp.repeat;
+        max_sets += static_cast<uint32_t>((*pp)->set_layouts.size()) * cp.repeat;
         ex->pipelines_.push_back(std::move(pp.value()));
     }
     ctx.set_label("");

@@ -40,7 +40,9 @@ struct PassTiming {
 
 class Executor {
   public:
-    static Result<std::unique_ptr<Executor>> create(vk::Context& ctx, CompiledGraph graph);
+    // With a pipeline cache (the live lab's), passes whose pipeline is unchanged share it with
+    // the previous executor instead of compiling it again.
+    static Result<std::unique_ptr<Executor>> create(vk::Context& ctx, CompiledGraph graph, PipelineCache* cache = nullptr);
     ~Executor();
 
     // Records, submits and waits for one frame (watchdog: `timeout`).
@@ -57,6 +59,13 @@ class Executor {
     std::vector<graph::ParamDesc>& params() { return graph_->desc.params; }
     // The graph's images as created (extent, mips, layers, samples), for inspection.
     const GraphResources& resources() const { return res_; }
+    // Passes whose pipeline was created by this executor (the others came from the cache).
+    const std::vector<std::string>& rebuilt_passes() const { return rebuilt_; }
+    // Takes over the contents of `old`'s images that have the same name and the same shape
+    // (format, size, mips, layers, samples, history), and its frame count, so a reload keeps
+    // accumulated and history images instead of starting from black. File and generator images
+    // are uploaded fresh (their source may be what changed).
+    Status adopt_contents(Executor& old);
     const std::vector<PassTiming>& timings() const { return timings_; }
     void set_timeout(std::chrono::milliseconds t) { timeout_ = t; }
     // Per-pass GPU timestamps cost time on some drivers (lavapipe waits for the work before a
@@ -72,7 +81,8 @@ class Executor {
     vk::Context& ctx_;
     std::unique_ptr<CompiledGraph> graph_;
     GraphResources res_;
-    std::vector<PassPipeline> pipelines_;
+    std::vector<std::shared_ptr<PassPipeline>> pipelines_;
+    std::vector<std::string> rebuilt_;
     vk::Buffer frame_ubo_, params_ubo_;
     vk::UniqueDescriptorPool pool_;
     vk::UniqueCommandPool cmd_pool_;

@@ -5,7 +5,9 @@
 #include "vk/names.hpp"
 
 #include <algorithm>
+#include <array>
 #include <map>
+#include <type_traits>
 
 namespace pl::exec {
 
@@ -134,11 +136,36 @@ Error pass_error(const graph::PassDesc& pd, const std::string& msg) {
     return e;
 }
 
-Result<PassPipeline> create_pass_pipeline(vk::Context& ctx, const CompiledGraph& g, const CompiledPass& cp,
-                                          const GraphResources& res) {
-    PassPipeline pp;
+namespace {
+
+// Appends the raw bytes of plain (pointer-free) values to a cache key.
+template <class T> void put(std::string& key, const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    key.append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+template <class T> void put_all(std::string& key, const std::vector<T>& v) {
+    put(key, v.size());
+    if (!v.empty()) key.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+
+} // namespace
+
+std::shared_ptr<PassPipeline> PipelineCache::find(const std::string& key) {
+    // Drop what no executor uses any more, so the map stays as small as the live pipelines.
+    for (auto it = entries_.begin(); it != entries_.end();) it = it->second.expired() ? entries_.erase(it) : std::next(it);
+    auto it = entries_.find(key);
+    return it == entries_.end() ? nullptr : it->second.lock();
+}
+
+void PipelineCache::insert(const std::string& key, const std::shared_ptr<PassPipeline>& p) { entries_[key] = p; }
+
+Result<std::shared_ptr<PassPipeline>> create_pass_pipeline(vk::Context& ctx, const CompiledGraph& g, const CompiledPass& cp,
+                                                           const GraphResources& res, PipelineCache* cache, bool* reused) {
+    auto pp_owner = std::make_shared<PassPipeline>();
+    PassPipeline& pp = *pp_owner;
+    if (reused) *reused = false;
     const graph::PassDesc& pd = *cp.desc;
-    if (cp.program.stages.empty()) return pp;
+    if (cp.program.stages.empty()) return pp_owner;
     VkDevice dev = ctx.device();
 
     // Descriptor set layouts from reflection, one per set index used.
@@ -146,56 +173,77 @@ Result<PassPipeline> create_pass_pipeline(vk::Context& ctx, const CompiledGraph&
     for (const auto& b : cp.program.reflection.bindings)
         sets[b.set].push_back({b.binding, descriptor_type(b.type), b.count, vk_stages(b.stages), nullptr});
     uint32_t nsets = sets.empty() ? 0 : sets.rbegin()->first + 1;
-    std::vector<VkDescriptorSetLayout> raw_layouts;
-    for (uint32_t s = 0; s < nsets; ++s) {
-        auto& v = sets[s];
-        VkDescriptorSetLayoutCreateInfo ci{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
-                                           .bindingCount = static_cast<uint32_t>(v.size()),
-                                           .pBindings = v.data()};
-        VkDescriptorSetLayout l;
-        VK_CHECK(vkCreateDescriptorSetLayout(dev, &ci, nullptr, &l));
-        pp.set_layouts.emplace_back(dev, l);
-        raw_layouts.push_back(l);
-    }
     VkPushConstantRange pcr{};
     const auto& refl = cp.program.reflection;
     if (refl.push_constant_size > 0) {
         pp.push_stages = vk_stages(refl.push_constant_stages);
         pcr = {pp.push_stages, 0, refl.push_constant_size};
     }
-    VkPipelineLayoutCreateInfo lci{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-                                   .setLayoutCount = static_cast<uint32_t>(raw_layouts.size()),
-                                   .pSetLayouts = raw_layouts.data(),
-                                   .pushConstantRangeCount = refl.push_constant_size > 0 ? 1u : 0u,
-                                   .pPushConstantRanges = &pcr};
-    VkPipelineLayout layout;
-    VK_CHECK(vkCreatePipelineLayout(dev, &lci, nullptr, &layout));
-    pp.layout = vk::UniquePipelineLayout(dev, layout);
-
-    std::vector<vk::UniqueShaderModule> modules;
-    std::vector<VkPipelineShaderStageCreateInfo> stages;
-    for (const auto& st : cp.program.stages) {
-        VkShaderModuleCreateInfo mci{.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
-                                     .codeSize = st.words.size() * 4,
-                                     .pCode = st.words.data()};
-        VkShaderModule m;
-        VK_CHECK(vkCreateShaderModule(dev, &mci, nullptr, &m));
-        modules.emplace_back(dev, m);
-        stages.push_back({.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
-                          .stage = vk_stage(st.stage),
-                          .module = m,
-                          .pName = "main"});
+    // The cache key starts with the layout and the code; the raster state follows below.
+    std::string key;
+    put(key, pd.kind);
+    for (uint32_t s = 0; s < nsets; ++s) {
+        put(key, s);
+        for (const auto& b : sets[s]) put(key, std::array<uint32_t, 4>{b.binding, uint32_t(b.descriptorType), b.descriptorCount, b.stageFlags});
     }
+    put(key, pcr);
+    for (const auto& st : cp.program.stages) {
+        put(key, st.stage);
+        put_all(key, st.words);
+    }
+    // Creates what the key describes, or shares the cached pipeline.
+    auto finish = [&](auto&& create_pipeline) -> Result<std::shared_ptr<PassPipeline>> {
+        if (cache)
+            if (auto hit = cache->find(key)) {
+                if (reused) *reused = true;
+                return hit;
+            }
+        std::vector<VkDescriptorSetLayout> raw_layouts;
+        for (uint32_t s = 0; s < nsets; ++s) {
+            auto& v = sets[s];
+            VkDescriptorSetLayoutCreateInfo ci{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
+                                               .bindingCount = static_cast<uint32_t>(v.size()),
+                                               .pBindings = v.data()};
+            VkDescriptorSetLayout l;
+            VK_CHECK(vkCreateDescriptorSetLayout(dev, &ci, nullptr, &l));
+            pp.set_layouts.emplace_back(dev, l);
+            raw_layouts.push_back(l);
+        }
+        VkPipelineLayoutCreateInfo lci{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+                                       .setLayoutCount = static_cast<uint32_t>(raw_layouts.size()),
+                                       .pSetLayouts = raw_layouts.data(),
+                                       .pushConstantRangeCount = refl.push_constant_size > 0 ? 1u : 0u,
+                                       .pPushConstantRanges = &pcr};
+        VkPipelineLayout layout;
+        VK_CHECK(vkCreatePipelineLayout(dev, &lci, nullptr, &layout));
+        pp.layout = vk::UniquePipelineLayout(dev, layout);
+        std::vector<vk::UniqueShaderModule> modules;
+        std::vector<VkPipelineShaderStageCreateInfo> stages;
+        for (const auto& st : cp.program.stages) {
+            VkShaderModuleCreateInfo mci{.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
+                                         .codeSize = st.words.size() * 4,
+                                         .pCode = st.words.data()};
+            VkShaderModule m;
+            VK_CHECK(vkCreateShaderModule(dev, &mci, nullptr, &m));
+            modules.emplace_back(dev, m);
+            stages.push_back({.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                              .stage = vk_stage(st.stage),
+                              .module = m,
+                              .pName = "main"});
+        }
+        VkPipeline p;
+        VK_CHECK(create_pipeline(layout, stages, &p));
+        pp.pipeline = vk::UniquePipeline(dev, p);
+        if (cache) cache->insert(key, pp_owner);
+        return pp_owner;
+    };
 
     if (pd.kind == graph::PassKind::compute) {
         pp.bind_point = VK_PIPELINE_BIND_POINT_COMPUTE;
-        VkComputePipelineCreateInfo ci{.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
-                                       .stage = stages[0],
-                                       .layout = layout};
-        VkPipeline p;
-        VK_CHECK(vkCreateComputePipelines(dev, VK_NULL_HANDLE, 1, &ci, nullptr, &p));
-        pp.pipeline = vk::UniquePipeline(dev, p);
-        return pp;
+        return finish([&](VkPipelineLayout layout, const std::vector<VkPipelineShaderStageCreateInfo>& stages, VkPipeline* p) {
+            VkComputePipelineCreateInfo ci{.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO, .stage = stages[0], .layout = layout};
+            return vkCreateComputePipelines(dev, VK_NULL_HANDLE, 1, &ci, nullptr, p);
+        });
     }
 
     // --- graphics ---
@@ -342,25 +390,35 @@ Result<PassPipeline> create_pass_pipeline(vk::Context& ctx, const CompiledGraph&
                                       .stencilAttachmentFormat = stencil_format};
     bool tess = std::any_of(cp.program.stages.begin(), cp.program.stages.end(),
                             [](const shader::StageSpirv& s) { return s.stage == Stage::tess_control; });
-    VkGraphicsPipelineCreateInfo gci{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
-                                     .pNext = &rci,
-                                     .stageCount = static_cast<uint32_t>(stages.size()),
-                                     .pStages = stages.data(),
-                                     .pVertexInputState = &vi,
-                                     .pInputAssemblyState = &ia,
-                                     .pTessellationState = tess ? &ts : nullptr,
-                                     .pViewportState = &vps,
-                                     .pRasterizationState = &rs,
-                                     .pMultisampleState = &ms,
-                                     .pDepthStencilState = &ds,
-                                     .pColorBlendState = &cbs,
-                                     .pDynamicState = &dys,
-                                     .layout = layout};
-    VkPipeline p;
-    VK_CHECK(vkCreateGraphicsPipelines(dev, VK_NULL_HANDLE, 1, &gci, nullptr, &p));
-    pp.pipeline = vk::UniquePipeline(dev, p);
+    // The rest of the key: every state value below, as the create-info will carry it.
+    put_all(key, color_formats);
+    put(key, std::array<VkFormat, 2>{depth_format, stencil_format});
+    put_all(key, attrs);
+    put(key, std::array<uint32_t, 4>{uint32_t(ia.topology), ts.patchControlPoints, uint32_t(tess), uint32_t(samples)});
+    put(key, std::array<uint32_t, 5>{rs.depthClampEnable, uint32_t(rs.polygonMode), rs.cullMode, uint32_t(rs.frontFace), rs.depthBiasEnable});
+    put(key, std::array<float, 3>{rs.depthBiasConstantFactor, rs.depthBiasSlopeFactor, rs.lineWidth});
+    put(key, std::array<uint32_t, 4>{ds.depthTestEnable, ds.depthWriteEnable, uint32_t(ds.depthCompareOp), ds.stencilTestEnable});
+    put(key, ds.front);
+    put(key, ds.back);
+    put_all(key, blends);
+    return finish([&](VkPipelineLayout layout, const std::vector<VkPipelineShaderStageCreateInfo>& stages, VkPipeline* p) {
+        VkGraphicsPipelineCreateInfo gci{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
+                                         .pNext = &rci,
+                                         .stageCount = static_cast<uint32_t>(stages.size()),
+                                         .pStages = stages.data(),
+                                         .pVertexInputState = &vi,
+                                         .pInputAssemblyState = &ia,
+                                         .pTessellationState = tess ? &ts : nullptr,
+                                         .pViewportState = &vps,
+                                         .pRasterizationState = &rs,
+                                         .pMultisampleState = &ms,
+                                         .pDepthStencilState = &ds,
+                                         .pColorBlendState = &cbs,
+                                         .pDynamicState = &dys,
+                                         .layout = layout};
+        return vkCreateGraphicsPipelines(dev, VK_NULL_HANDLE, 1, &gci, nullptr, p);
+    });
     (void)g;
-    return pp;
 }
 
 } // namespace pl::exec

@@ -6,6 +6,9 @@
 #include "exec/resources.hpp"
 #include "vk/context.hpp"
 
+#include <map>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace pl::exec {
@@ -18,10 +21,25 @@ struct PassPipeline {
     uint32_t push_stages = 0;  // VkShaderStageFlags, 0 = no push constants
 };
 
-// nullptr-pipeline result for transfer kinds. Errors (unsupported blend on this device, sample
-// count mismatch between targets) name the pass.
-Result<PassPipeline> create_pass_pipeline(vk::Context& ctx, const CompiledGraph& g, const CompiledPass& pass,
-                                          const GraphResources& res);
+// Pipelines shared by successive executors of the live lab. The key is everything a pipeline is
+// made from (SPIR-V of every stage, binding layout, formats, raster/blend/depth state), byte for
+// byte, so a hit is exact. Entries are weak: a pipeline lives while some executor uses it, so a
+// reload that changes one pass rebuilds that pass only, and nothing outlives its last user.
+class PipelineCache {
+  public:
+    std::shared_ptr<PassPipeline> find(const std::string& key);
+    void insert(const std::string& key, const std::shared_ptr<PassPipeline>& p);
+
+  private:
+    std::map<std::string, std::weak_ptr<PassPipeline>> entries_;
+};
+
+// An empty PassPipeline (no pipeline) for transfer kinds. Errors (unsupported blend on this
+// device, sample count mismatch between targets) name the pass. With a cache, an identical
+// pipeline is shared instead of created (`*reused` says which happened).
+Result<std::shared_ptr<PassPipeline>> create_pass_pipeline(vk::Context& ctx, const CompiledGraph& g, const CompiledPass& pass,
+                                                           const GraphResources& res, PipelineCache* cache = nullptr,
+                                                           bool* reused = nullptr);
 
 // Shader stage bits of the reflection (1 << shader::Stage) as Vulkan flags.
 VkShaderStageFlags vk_stages(uint32_t stage_bits);

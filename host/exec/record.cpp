@@ -28,7 +28,7 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
     CompiledGraph& g = *graph_;
     const CompiledPass& cp = g.passes[pass_index];
     const graph::PassDesc& pd = *cp.desc;
-    PassPipeline& pp = pipelines_[pass_index];
+    PassPipeline& pp = *pipelines_[pass_index];
 
     // Names -> physical resources for this iteration (ping-pong swaps on odd iterations).
     auto swapped = [&](const std::string& n) -> std::string {

@@ -4,7 +4,9 @@
 # compile, pipelines), first frame = the next frame-presented - reload-ok (includes llvmpipe's
 # shader compilation at first draw). Prints p50/p95 of each and of the total.
 # The edited file holds the token /*KNOB*/1.0; each edit writes a different number there, so
-# the generated code really changes (an unused constant would hit Mesa's shader cache).
+# the generated code really changes (an unused constant would hit Mesa's shader cache). The
+# numbers differ between runs too (a per-run salt): Mesa's on-disk cache keeps compiled shaders
+# across processes, and a repeated run would otherwise measure cache hits.
 # Usage: reload_latency.sh PASSLAB [EDITS] [PRESET_DIR FILE]
 #   reload_latency.sh build/default/lab/passlab 20                                 single pass
 #   reload_latency.sh build/default/lab/passlab 20 tests/bench/ten-pass shared.glsl  include of 10 passes
@@ -21,9 +23,10 @@ i=0; while [ "$(count frame-presented)" -lt 5 ]; do i=$((i+1)); [ $i -lt 300 ] |
 shader="$work/p/$file"
 grep -q '/\*KNOB\*/' "$shader" || { echo "$file has no /*KNOB*/ token" >&2; exit 2; }
 : > "$work/edits"
+salt=$(( $(date +%s%N | cut -c8-13) % 9000 + 1000 ))  # 4 digits
 k=1
 while [ $k -le "$edits" ]; do
-  sed "s|/\*KNOB\*/[0-9.]*|/*KNOB*/1.$(printf '%04d' $k)|" "$shader" > "$shader.tmp~"
+  sed "s|/\*KNOB\*/[0-9.]*|/*KNOB*/$k.$salt|" "$shader" > "$shader.tmp~"
   before=$(count reload-ok)
   date +%s%3N >> "$work/edits"
   mv "$shader.tmp~" "$shader"
@@ -41,7 +44,7 @@ awk -v edits="$work/edits" '
   /"frame-presented"/ && want_frame { frame[want_frame] = field($0, "wall_ms"); want_frame = 0 }
   END {
     for (k = 1; k <= n; ++k) { d[k] = started[k] - edit[k]; r[k] = ok[k] - started[k]; f[k] = frame[k] - ok[k]; t[k] = frame[k] - edit[k] }
-    printf "edits %d\n", n
+    printf "edits %d\n", n; if (ENVIRON["VERBOSE"] != "") for (k = 1; k <= n; ++k) printf "  edit %2d: detect %6.1f rebuild %6.1f first frame %6.1f total %6.1f\n", k, d[k], r[k], f[k], t[k]
     printf "detect       p50 %6.1f ms  p95 %6.1f ms\n", pct(d, n, 0.5), pct(d, n, 0.95)
     printf "rebuild      p50 %6.1f ms  p95 %6.1f ms  (parse, compile, pipelines)\n", pct(r, n, 0.5), pct(r, n, 0.95)
     printf "first frame  p50 %6.1f ms  p95 %6.1f ms  (render incl. first-draw compile, present)\n", pct(f, n, 0.5), pct(f, n, 0.95)
