@@ -30,6 +30,11 @@ Result<std::unique_ptr<Overlay>> Overlay::create(vk::Context& ctx, Window& windo
     io.IniFilename = nullptr;  // never write imgui.ini into the user's working folder
     ImGui::StyleColorsDark();
     ImGui::GetStyle().Alpha = 0.94f;
+    // HiDPI: the panel keeps its physical size on a 2x display.
+    if (float scale = window.content_scale(); scale > 1.01f) {
+        ImGui::GetStyle().ScaleAllSizes(scale);
+        io.FontGlobalScale = scale;
+    }
     // install_callbacks = true chains the window's own GLFW callbacks (orbit, keys).
     if (!ImGui_ImplGlfw_InitForVulkan(window.handle(), true)) return make_error("cannot initialise the ImGui GLFW backend");
     o->glfw_ = true;

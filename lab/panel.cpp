@@ -1,6 +1,6 @@
 #include "panel.hpp"
 
-#include "sidecar.hpp"
+#include "exec/param_sidecar.hpp"
 
 #include <imgui.h>
 
@@ -222,7 +222,7 @@ std::string set_arguments(const exec::Executor& ex, const LabState& s) {
     std::string out;
     for (const auto& p : ex.graph().desc.params) {
         auto it = s.touched.find(p.name);
-        if (it != s.touched.end()) out += " --set " + p.name + "=" + format_param_value(p, it->second);
+        if (it != s.touched.end()) out += " --set " + p.name + "=" + exec::format_param_value(p, it->second);
     }
     return out;
 }

@@ -13,7 +13,7 @@
 #include "overlay.hpp"
 #include "panel.hpp"
 #include "reload/watcher.hpp"
-#include "sidecar.hpp"
+#include "exec/param_sidecar.hpp"
 #include "window.hpp"
 
 #include <GLFW/glfw3.h>
@@ -57,13 +57,15 @@ void reapply_touched(LabState& s, exec::Executor& ex) {
 }
 
 // Saved values from the sidecar become "touched" values; `--set` on the command line wins.
-void apply_sidecar(LabState& s, exec::Executor& ex, const fs::path& file, const std::vector<std::string>& cli_sets) {
-    auto sets = load_sidecar(file);
+// Returns how many values it applied.
+int apply_sidecar(LabState& s, exec::Executor& ex, const fs::path& file, const std::vector<std::string>& cli_sets) {
+    auto sets = exec::load_sidecar(file);
     if (!sets) {
         std::fprintf(stderr, "passlab: ignoring %s: %s\n", file.string().c_str(), sets.error().format().c_str());
-        return;
+        return 0;
     }
-    if (sets->empty()) return;
+    if (sets->empty()) return 0;
+    int applied = 0;
     for (const auto& a : *sets) {
         std::string name = a.substr(0, a.find('='));
         bool on_cli = std::any_of(cli_sets.begin(), cli_sets.end(), [&](const std::string& c) { return c.rfind(name + "=", 0) == 0; });
@@ -74,8 +76,11 @@ void apply_sidecar(LabState& s, exec::Executor& ex, const fs::path& file, const 
         }
         for (const auto& p : ex.params())
             if (p.name == name) s.touched[name] = p.value;
+        ++applied;
     }
-    std::fprintf(stderr, "passlab: param values from %s (delete it, or --no-sidecar, for the preset's own)\n", file.string().c_str());
+    std::fprintf(stderr, "passlab: %d param value(s) from %s (delete it, or --no-sidecar, for the preset's own)\n", applied,
+                 file.string().c_str());
+    return applied;
 }
 
 // build_graph (parse, include expansion, glslang, reflection: no device) on a worker thread, so
@@ -132,20 +137,23 @@ int run(const RunOptions& o, const CommonOptions& c) {
     exec::PipelineCache pipelines;  // unchanged passes keep their pipeline across reloads
     BackgroundBuild reload;
     bool first_new_frame = false;
+    std::array<int, 2> pending_size{0, 0};  // a window size waiting to settle
+    std::array<int, 2> built_size = built->view;
+    auto resize_at = std::chrono::steady_clock::now();
     watcher.watch(built->dependencies);
     auto ex = exec::Executor::create(**ctx, std::move(built.value()), &pipelines);
     if (!ex) return report(ex.error());
     std::unique_ptr<exec::Executor> current = std::move(ex.value());
     std::vector<graph::ParamDesc> base_params = current->params();  // preset.toml + --set: "Reset" returns here
-    log.write("started", "\"preset\":" + json_string(toml.string()));
 
     LabState st;
     st.time = o.time;
     st.show_ui = o.ui;
     st.show_viewer = !o.inspect.empty();
     st.viewer_image = o.inspect;
-    const fs::path sidecar = sidecar_path(toml);
-    if (o.sidecar) apply_sidecar(st, *current, sidecar, o.set);
+    const fs::path sidecar = exec::sidecar_path(toml);
+    int from_sidecar = o.sidecar ? apply_sidecar(st, *current, sidecar, o.set) : 0;
+    log.write("started", "\"preset\":" + json_string(toml.string()) + ",\"sidecar_values\":" + std::to_string(from_sidecar));
 
     auto last = std::chrono::steady_clock::now();
     graph::OrbitCamera camera = current->graph().desc.view.orbit;
@@ -184,6 +192,21 @@ int run(const RunOptions& o, const CommonOptions& c) {
         double delta = st.paused ? (st.step ? 1.0 / 60.0 : 0.0) : dt * st.speed;
         st.step = false;
         st.time += delta;
+
+        // Resize: once the framebuffer size has settled, rebuild at that size; images sized from
+        // the view are recreated (history restarts), the others keep their contents.
+        // (Each size is built once: a size that fails to build is not retried every frame.)
+        if (auto fb = (*window)->framebuffer_size(); fb[0] > 0 && fb[1] > 0 && fb != built_size && fb != pending_size) {
+            pending_size = fb;
+            resize_at = now + std::chrono::milliseconds(150);
+        }
+        if (pending_size[0] > 0 && now >= resize_at && !reload.busy()) {
+            built_size = pending_size;
+            bo.size = pending_size;
+            log.write("resize", "\"size\":[" + std::to_string(pending_size[0]) + "," + std::to_string(pending_size[1]) + "]");
+            reload.start(toml, bo, log.now_ms());
+            pending_size = {0, 0};
+        }
 
         // Reload: collect a burst of changes and compile them on a worker thread while the last
         // good graph keeps rendering; swap only when everything built.
@@ -269,7 +292,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
         draw_panel(st, *current, viewer.get(), preset_name);
         (*overlay)->end_frame();
         if (st.save_sidecar) {
-            auto s = save_sidecar(sidecar, current->params(), st.touched);
+            auto s = exec::save_sidecar(sidecar, current->params(), st.touched);
             st.status = s ? "saved " + std::to_string(st.touched.size()) + " value(s) to " + sidecar.string()
                           : "save failed: " + s.error().message;
             std::fprintf(stderr, "passlab: %s\n", st.status.c_str());

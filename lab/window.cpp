@@ -248,6 +248,18 @@ void Window::save_capture() {
     capture_buffer_ = {};
 }
 
+std::array<int, 2> Window::framebuffer_size() const {
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window_, &w, &h);
+    return {w, h};
+}
+
+float Window::content_scale() const {
+    float x = 1, y = 1;
+    glfwGetWindowContentScale(window_, &x, &y);
+    return std::max(x, y);
+}
+
 bool Window::should_close() const { return glfwWindowShouldClose(window_); }
 void Window::poll() { glfwPollEvents(); }
 void Window::set_title(const std::string& t) { glfwSetWindowTitle(window_, t.c_str()); }

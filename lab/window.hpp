@@ -6,6 +6,7 @@
 #include "vk/context.hpp"
 #include "vk/resources.hpp"
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -50,6 +51,9 @@ class Window {
     // UI backend needs.
     VkRenderPass render_pass() const { return render_pass_; }
     uint32_t image_count() const { return static_cast<uint32_t>(images_.size()); }
+    // The framebuffer size in pixels (HiDPI: larger than the window size in screen units).
+    std::array<int, 2> framebuffer_size() const;
+    float content_scale() const;
     GLFWwindow* handle() const { return window_; }
     void set_title(const std::string& t);
     // Saves the next presented frame, overlay included, as a PNG (UI screenshots, tests).

@@ -3,13 +3,15 @@
 # it the way editors do (write a temporary file, rename it over the original): a shader change,
 # a syntax error, its fix, an include change and a TOML change. The event log must show each
 # reload with the right outcome, and frames must keep being presented while the shader is
-# broken (keep-last-good).
+# broken (keep-last-good). Only the passes whose code changed get new pipelines; a param saved
+# in the sidecar file is applied at start; --capture saves the window with its panel.
 # Usage: live_reload.sh PASSLAB WORKDIR
 set -eu
 passlab=$1 work=$2
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work" && mkdir -p "$work" && cp -r "$here/preset" "$work/p"
 p="$work/p" ev="$work/events.jsonl"
+printf '# saved by the panel\ngain = 0.75\n' > "$p/preset.params.toml"
 save() {  # save FILE CONTENT: temp file + rename, like vim/VS Code/JetBrains
   printf '%s\n' "$2" > "$1.tmp~" && mv "$1.tmp~" "$1"
 }
@@ -77,5 +79,17 @@ grep '"reload-failed"' "$ev" | grep -q '"file":"[^"]*main.frag","line":6' || fai
 grep '"reload-failed"' "$ev" | grep -q "undefined_name" || fail "reload-failed does not carry the compiler message"
 grep '"reload-started"' "$ev" | grep -q 'tint.glsl' || fail "the include edit was not seen"
 grep '"reload-started"' "$ev" | grep -q 'preset.toml' || fail "the TOML edit was not seen"
+grep -q '"started".*"sidecar_values":1' "$ev" || fail "the sidecar's saved value was not applied"
+# Pipelines are rebuilt for changed code only: main.frag and its include rebuild "main", never
+# "post"; the TOML edit changes a param value, which needs no pipeline at all.
+oks=$(grep '"reload-ok"' "$ev")
+[ "$(echo "$oks" | sed -n 1p | grep -o '"rebuilt":\[[^]]*\]')" = '"rebuilt":["main"]' ] || fail "the shader edit did not rebuild exactly main"
+[ "$(echo "$oks" | sed -n 3p | grep -o '"rebuilt":\[[^]]*\]')" = '"rebuilt":["main"]' ] || fail "the include edit did not rebuild exactly main"
+[ "$(echo "$oks" | sed -n 4p | grep -o '"rebuilt":\[[^]]*\]')" = '"rebuilt":[]' ] || fail "the param edit rebuilt a pipeline"
+
+# The window with its panel, saved by --capture: a PNG of the window's size.
+xvfb-run -a -s "-screen 0 640x480x24" "$passlab" run "$p" --size 320x200 --frames 3 --capture "$work/ui.png" > "$work/capture.log" 2>&1 ||
+  fail "run --capture failed: $(cat "$work/capture.log")"
+[ "$(od -An -tx1 -j16 -N8 "$work/ui.png" | tr -d ' \n')" = "00000140000000c8" ] || fail "the capture is not a 320x200 PNG"
 grep -q 'undefined_name' "$work/run.log" || fail "the terminal did not show the error"
 echo "live reload: $(grep -c reload-ok "$ev") reloads ok, $(grep -c reload-failed "$ev") failed as expected, $(grep -c frame-presented "$ev") frames presented"

@@ -1,4 +1,4 @@
-#include "sidecar.hpp"
+#include "exec/param_sidecar.hpp"
 
 #include <cstdio>
 #include <fstream>
@@ -6,7 +6,7 @@
 
 namespace fs = std::filesystem;
 
-namespace pl::lab {
+namespace pl::exec {
 
 fs::path sidecar_path(const fs::path& preset_toml) {
     return preset_toml.parent_path() / (preset_toml.stem().string() + ".params.toml");
@@ -86,4 +86,4 @@ Result<std::vector<std::string>> load_sidecar(const fs::path& file) {
     return sets;
 }
 
-} // namespace pl::lab
+} // namespace pl::exec

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace pl::lab {
+namespace pl::exec {
 
 std::filesystem::path sidecar_path(const std::filesystem::path& preset_toml);
 
@@ -27,4 +27,4 @@ Result<std::vector<std::string>> load_sidecar(const std::filesystem::path& file)
 // One param value in `--set` syntax (enum: its option name; bool: true/false).
 std::string format_param_value(const graph::ParamDesc& p, const std::array<double, 4>& v);
 
-} // namespace pl::lab
+} // namespace pl::exec
