@@ -1,7 +1,8 @@
 #!/bin/sh
-# Host vs floor: renders the fBm pass with `passlab bench` (tests/bench/fbm-only) and with the
-# raw-Vulkan floor on the SPIR-V passlab generates for it, then prints the throughput ratio
-# host/floor (1.0 = no host overhead; the target is >= 0.95).
+# Host vs floor: renders the fBm pass with `passlab bench` (tests/bench/fbm-only, a fragment
+# pass, and tests/bench/fbm-compute, the same field by a compute pass) and with the raw-Vulkan
+# floor on the SPIR-V passlab generates for each, then prints the throughput ratio host/floor
+# (1.0 = no host overhead; the target is >= 0.95).
 # Usage: compare.sh PASSLAB FLOOR [SIZE ...] [FRAMES]   e.g. compare.sh build/default/lab/passlab build/default/tests/bench/passlab_floor 640x360 1920x1080 60
 set -eu
 passlab=$1 floor=$2
@@ -13,12 +14,22 @@ for a in "$@"; do
 done
 [ -n "$sizes" ] || sizes="640x360 1920x1080"
 tmp=$(mktemp -d)
-"$passlab" check tests/bench/fbm-only --spirv "$tmp" --no-cache >/dev/null
-for size in $sizes; do
-  w=${size%x*} h=${size#*x}
-  host=$("$passlab" bench tests/bench/fbm-only --size "$size" --frames "$frames" --warmup 5 2>/dev/null | awk '/^frame/ {print $6}')
-  base=$("$floor" "$tmp/fbm.vertex.spv" "$tmp/fbm.fragment.spv" "$w" "$h" $((frames + 5)) | awk '{for (i = 1; i <= NF; ++i) if ($i == "median") print $(i + 1)}')
-  ratio=$(awk -v f="$base" -v h="$host" 'BEGIN { printf "%.3f", f / h }')
-  echo "fbm fragment $size: host median $host ms, floor median $base ms, throughput host/floor $ratio"
+trap 'rm -rf "$tmp"' EXIT
+mkdir "$tmp/fragment" "$tmp/compute"
+"$passlab" check tests/bench/fbm-only --spirv "$tmp/fragment" --no-cache >/dev/null
+"$passlab" check tests/bench/fbm-compute --spirv "$tmp/compute" --no-cache >/dev/null
+median() { awk '{for (i = 1; i <= NF; ++i) if ($i == "median") print $(i + 1)}' | tr -d ','; }
+for variant in fragment compute; do
+  for size in $sizes; do
+    w=${size%x*} h=${size#*x}
+    if [ $variant = fragment ]; then
+      host=$("$passlab" bench tests/bench/fbm-only --size "$size" --frames "$frames" --warmup 5 2>/dev/null | awk '/^frame/ {print $6}')
+      base=$("$floor" "$tmp/fragment/fbm.vertex.spv" "$tmp/fragment/fbm.fragment.spv" "$w" "$h" $((frames + 5)) | median)
+    else
+      host=$("$passlab" bench tests/bench/fbm-compute --size "$size" --frames "$frames" --warmup 5 2>/dev/null | awk '/^frame/ {print $6}')
+      base=$("$floor" --compute "$tmp/compute/fbm.compute.spv" "$w" "$h" $((frames + 5)) | median)
+    fi
+    ratio=$(awk -v f="$base" -v h="$host" 'BEGIN { printf "%.3f", f / h }')
+    echo "fbm $variant $size: host median $host ms, floor median $base ms, throughput host/floor $ratio"
+  done
 done
-rm -rf "$tmp"
