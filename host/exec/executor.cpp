@@ -119,6 +119,7 @@ Result<std::unique_ptr<Executor>> Executor::create(vk::Context& ctx, CompiledGra
 
 Status Executor::render(const FrameInput& in) {
     CompiledGraph& g = *graph_;
+    const auto t_record = std::chrono::steady_clock::now();
     frame_parity_ = frames_rendered_ & 1;
     instance_order_ = in.instance_order;
 
@@ -156,6 +157,7 @@ Status Executor::render(const FrameInput& in) {
     VK_CHECK(vkBeginCommandBuffer(cmd_, &bi));
     Status st = record_frame(cmd_, in);
     VK_CHECK(vkEndCommandBuffer(cmd_));
+    record_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_record).count();
     ctx_.set_label("");
     if (!st) return st;
 

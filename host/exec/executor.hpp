@@ -67,6 +67,9 @@ class Executor {
     // are uploaded fresh (their source may be what changed).
     Status adopt_contents(Executor& old);
     const std::vector<PassTiming>& timings() const { return timings_; }
+    // CPU time the last render() spent filling blocks, writing descriptors and recording
+    // commands: the host's own cost per frame, before submit and wait.
+    double record_ms() const { return record_ms_; }
     void set_timeout(std::chrono::milliseconds t) { timeout_ = t; }
     // Per-pass GPU timestamps cost time on some drivers (lavapipe waits for the work before a
     // timestamp): on by default, off for pure frame-time measurements.
@@ -83,6 +86,7 @@ class Executor {
     GraphResources res_;
     std::vector<std::shared_ptr<PassPipeline>> pipelines_;
     std::vector<std::string> rebuilt_;
+    double record_ms_ = 0.0;
     vk::Buffer frame_ubo_, params_ubo_;
     vk::UniqueDescriptorPool pool_;
     vk::UniqueCommandPool cmd_pool_;
