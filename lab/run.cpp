@@ -144,6 +144,11 @@ int run(const RunOptions& o, const CommonOptions& c) {
     auto ex = exec::Executor::create(**ctx, std::move(built.value()), &pipelines);
     if (!ex) return report(ex.error());
     std::unique_ptr<exec::Executor> current = std::move(ex.value());
+    // A runaway shader is cut off after --timeout: the watchdog reports which passes were in the
+    // frame. The device cannot be trusted after that (lavapipe cannot cancel a shader), so the
+    // lab ends with the message rather than render on a hung queue.
+    const auto frame_timeout = std::chrono::milliseconds(static_cast<long long>(c.timeout_s * 1000));
+    current->set_timeout(frame_timeout);
     std::vector<graph::ParamDesc> base_params = current->params();  // preset.toml + --set: "Reset" returns here
 
     LabState st;
@@ -245,6 +250,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
                     // submitted so far has finished (Context::collect after the next frame's fence).
                     (*ctx)->retire(std::move(current));
                     current = std::move(next_ex.value());
+                    current->set_timeout(frame_timeout);
                     base_params = current->params();
                     reapply_touched(st, *current);
                     watcher.watch(current->graph().dependencies);
