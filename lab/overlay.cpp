@@ -51,29 +51,9 @@ Result<std::unique_ptr<Overlay>> Overlay::create(vk::Context& ctx, Window& windo
     if (!ImGui_ImplVulkan_Init(&ii, window.render_pass())) return make_error("cannot initialise the ImGui Vulkan backend");
     o->vulkan_ = true;
 
-    // Font atlas upload: one command buffer, submitted and waited for here, once.
-    VkCommandPoolCreateInfo pci{.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO, .queueFamilyIndex = ctx.queue_family()};
-    VkCommandPool cp;
-    VK_CHECK(vkCreateCommandPool(dev, &pci, nullptr, &cp));
-    vk::UniqueCommandPool cmd_pool(dev, cp);
-    VkCommandBufferAllocateInfo ai{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
-                                   .commandPool = cp,
-                                   .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
-                                   .commandBufferCount = 1};
-    VkCommandBuffer cb;
-    VK_CHECK(vkAllocateCommandBuffers(dev, &ai, &cb));
-    VkCommandBufferBeginInfo bi{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
-                                .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
-    VK_CHECK(vkBeginCommandBuffer(cb, &bi));
-    ImGui_ImplVulkan_CreateFontsTexture(cb);
-    VK_CHECK(vkEndCommandBuffer(cb));
-    VkFenceCreateInfo fci{.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VkFence f;
-    VK_CHECK(vkCreateFence(dev, &fci, nullptr, &f));
-    vk::UniqueFence fence(dev, f);
-    VkSubmitInfo si{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO, .commandBufferCount = 1, .pCommandBuffers = &cb};
-    VK_CHECK(vkQueueSubmit(ctx.queue(), 1, &si, f));
-    if (auto w = ctx.wait(f, std::chrono::seconds(20), "ImGui font upload"); !w) return w.error();
+    // Font atlas upload, once.
+    if (auto st = ctx.run_once([](VkCommandBuffer cb) { ImGui_ImplVulkan_CreateFontsTexture(cb); }, std::chrono::seconds(20)); !st)
+        return st.error();
     ImGui_ImplVulkan_DestroyFontUploadObjects();
     return o;
 }

@@ -1,5 +1,6 @@
 #include "viewer.hpp"
 
+#include "vk/barrier.hpp"
 #include "vk/check.hpp"
 
 #include <algorithm>
@@ -62,19 +63,7 @@ void ViewerTexture::update(const image::Image& src, const ViewerMapping& m) {
 
 void ViewerTexture::barrier(VkCommandBuffer cb, VkImageLayout to, VkPipelineStageFlags2 src, VkAccessFlags2 sa,
                             VkPipelineStageFlags2 dst, VkAccessFlags2 da) {
-    VkImageMemoryBarrier2 ib{.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
-                             .srcStageMask = src,
-                             .srcAccessMask = sa,
-                             .dstStageMask = dst,
-                             .dstAccessMask = da,
-                             .oldLayout = layout_state_,
-                             .newLayout = to,
-                             .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                             .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                             .image = image_.handle(),
-                             .subresourceRange = image_.full_range()};
-    VkDependencyInfo di{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &ib};
-    vkCmdPipelineBarrier2(cb, &di);
+    vk::image_barrier(cb, image_.handle(), image_.full_range(), layout_state_, to, src, sa, dst, da);
     layout_state_ = to;
 }
 

@@ -1,6 +1,7 @@
 #include "window.hpp"
 
 #include "image/image.hpp"
+#include "vk/barrier.hpp"
 #include "vk/check.hpp"
 
 #define GLFW_INCLUDE_VULKAN
@@ -289,19 +290,7 @@ Status Window::present(const Recorders& rec) {
     // The swapchain image is outside the graph: its two transitions are the window's own.
     auto barrier = [&](VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 src, VkAccessFlags2 sa,
                        VkPipelineStageFlags2 dst, VkAccessFlags2 da) {
-        VkImageMemoryBarrier2 ib{.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
-                                 .srcStageMask = src,
-                                 .srcAccessMask = sa,
-                                 .dstStageMask = dst,
-                                 .dstAccessMask = da,
-                                 .oldLayout = from,
-                                 .newLayout = to,
-                                 .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                                 .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                                 .image = images_[index],
-                                 .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1}};
-        VkDependencyInfo di{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &ib};
-        vkCmdPipelineBarrier2(cmd_, &di);
+        vk::image_barrier(cmd_, images_[index], {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1}, from, to, src, sa, dst, da);
     };
     barrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, 0,
             VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
