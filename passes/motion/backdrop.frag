@@ -1,5 +1,5 @@
 #version 450
-// A static plane at z = -1 behind the ball: each pixel's ray (unprojected through this frame's
+// The motion-blur presets' static backdrop, a plane at z = -1 behind the ball: each pixel's ray (unprojected through this frame's
 // inverse view-projection) meets it at p, whose velocity is p through this frame's and last
 // frame's view-projection. A fixed camera gives zero; orbiting gives camera-motion blur.
 #include "velocity.glsl"
@@ -19,5 +19,6 @@ void main() {
     vec2 cell = floor(p.xy * kCells);
     float checker = mod(cell.x + cell.y, 2.0);
     color = params.backdrop == BACKDROP_BLACK ? vec4(0.0, 0.0, 0.0, 1.0) : vec4(vec3(0.1 + 0.3 * checker), 1.0);
-    velocity = vec4(velocity_pixels(frame.view_proj * vec4(p, 1.0), frame.prev_view_proj * vec4(p, 1.0)), 0.0, 1.0);
+    velocity = vec4(velocity_pixels(frame.view_proj * vec4(p, 1.0), frame.prev_view_proj * vec4(p, 1.0)),
+                    -(frame.view * vec4(p, 1.0)).z, 1.0);  // xy pixels per frame, z view depth
 }
