@@ -48,13 +48,27 @@ CheckResult probe(const image::Image& img, const graph::CheckDesc& c) {
         r.detail = "needs expect = [1 to 4 values]";
         return r;
     }
+    // expect[k] is channel k, or with channel/channels the k-th channel named there.
+    std::vector<int> chans;
+    if (c.args.count("channel") || c.args.count("channels")) chans = channels(c.args);
+    else
+        for (size_t k = 0; k < expect.size(); ++k) chans.push_back(static_cast<int>(k));
+    if (chans.size() != expect.size()) {
+        r.detail = "expect has " + std::to_string(expect.size()) + " value(s) for " + std::to_string(chans.size()) + " channel(s)";
+        return r;
+    }
     const float* p = img.at(x, y);
     double worst = 0.0;
     std::string got;
     for (size_t k = 0; k < expect.size(); ++k) {
-        double d = std::fabs(p[k] - expect[k]);
+        int ch = chans[k];
+        if (ch < 0 || ch > 3) {
+            r.detail = "channel " + std::to_string(ch) + " does not exist (0..3)";
+            return r;
+        }
+        double d = std::fabs(p[ch] - expect[k]);
         worst = std::isfinite(d) ? std::max(worst, d) : INFINITY;
-        got += (k ? "," : "") + fmt(p[k]);
+        got += (k ? "," : "") + fmt(p[ch]);
     }
     r.passed = worst <= tol;
     r.detail = "got (" + got + "), max error " + fmt(worst) + " (tol " + fmt(tol) + ")";
