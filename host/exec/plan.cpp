@@ -150,15 +150,19 @@ Result<std::vector<size_t>> order_passes(const std::vector<PlanPass>& passes) {
             if (it == writers.end()) continue;  // files, generators, history: nobody writes them
             const auto& ws = it->second;
             std::optional<size_t> before, after;
+            bool self = false;  // the reader also writes it (atomics, read-modify-write)
             for (size_t w : ws) {
                 if (w < r) before = w;
                 else if (w > r && !after) after = w;
+                self = self || w == r;
             }
             if (before) {
                 add_edge(*before, r, res);
                 if (after) add_edge(r, *after, res);  // write-after-read
-            } else if (after) {
-                add_edge(*after, r, res);  // written only later in the file: the writer moves up
+            } else if (after && !self) {
+                // Written only later in the file: the writer moves up. (A pass that itself writes
+                // the resource is its first writer: file order among the writers stands.)
+                add_edge(*after, r, res);
                 for (size_t w : ws)
                     if (w > *after) {
                         add_edge(r, w, res);

@@ -364,11 +364,14 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
     } else {
         const GpuMesh* mesh = pd.mesh.empty() ? nullptr : &res_.meshes.at(pd.mesh);
         uint32_t instances = pd.instances ? static_cast<uint32_t>(*pd.instances) : mesh ? mesh->instances : 1u;
+        // With adjacency the mesh is drawn from its 6-indices-per-triangle list.
+        const bool adjacency = mesh && pd.topology == "triangles_adjacency";
+        const uint32_t index_count = mesh ? (adjacency ? mesh->adjacency_count : mesh->index_count) : 0;
         if (mesh) {
             VkDeviceSize zero = 0;
             VkBuffer vb = mesh->vertices.buffer;
             vkCmdBindVertexBuffers(cb, 0, 1, &vb, &zero);
-            vkCmdBindIndexBuffer(cb, mesh->indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+            vkCmdBindIndexBuffer(cb, adjacency ? mesh->adjacency.buffer : mesh->indices.buffer, 0, VK_INDEX_TYPE_UINT32);
         }
         if (!pd.indirect.empty()) {
             VkBuffer ib = phys_buffer(pd.indirect, false)->buffer.buffer;
@@ -386,11 +389,11 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
                 }
             }
             for (uint32_t i : order) {
-                if (mesh) vkCmdDrawIndexed(cb, mesh->index_count, 1, 0, 0, i);
+                if (mesh) vkCmdDrawIndexed(cb, index_count, 1, 0, 0, i);
                 else vkCmdDraw(cb, static_cast<uint32_t>(std::max(0, pd.vertex_count)), 1, 0, i);
             }
         } else if (mesh) {
-            vkCmdDrawIndexed(cb, mesh->index_count, instances, 0, 0, 0);
+            vkCmdDrawIndexed(cb, index_count, instances, 0, 0, 0);
         } else {
             vkCmdDraw(cb, static_cast<uint32_t>(std::max(0, pd.vertex_count)), instances, 0, 0);
         }

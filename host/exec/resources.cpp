@@ -158,6 +158,15 @@ Result<GpuMesh> create_mesh(vk::Context& ctx, const CompiledGraph& g, const grap
     std::memcpy(gm.indices.mapped, mesh->indices.data(), ib);
     gm.index_count = static_cast<uint32_t>(mesh->indices.size());
     gm.instances = static_cast<uint32_t>(std::max(1, md.instances));
+    bool adjacency = std::any_of(g.desc.passes.begin(), g.desc.passes.end(), [&](const graph::PassDesc& p) {
+        return p.mesh == md.name && p.topology == "triangles_adjacency";
+    });
+    if (adjacency) {
+        std::vector<uint32_t> adj = scene::adjacency_indices(*mesh);
+        gm.adjacency = vk::create_buffer(ctx, std::max<size_t>(adj.size() * 4, 16), VK_BUFFER_USAGE_INDEX_BUFFER_BIT, true);
+        std::memcpy(gm.adjacency.mapped, adj.data(), adj.size() * 4);
+        gm.adjacency_count = static_cast<uint32_t>(adj.size());
+    }
     return gm;
 }
 

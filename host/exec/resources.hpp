@@ -47,6 +47,9 @@ struct GraphBuffer {
 struct GpuMesh {
     vk::Buffer vertices, indices;
     uint32_t index_count = 0;
+    // For passes with topology = "triangles_adjacency" (made only when one uses the mesh).
+    vk::Buffer adjacency;
+    uint32_t adjacency_count = 0;
     uint32_t instances = 1;
 };
 

@@ -32,6 +32,15 @@ struct Mesh {
 std::vector<std::string> generator_names();
 Result<Mesh> generate_mesh(const std::string& generator, const std::map<std::string, double>& args);
 
+// Index list for VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST_WITH_ADJACENCY (geometry shaders that look
+// at neighbouring triangles: silhouettes, fins): per triangle (v0, a01, v1, a12, v2, a20), a_ij
+// the vertex opposite edge ij in the triangle across it. Vertices are matched by position, so
+// the seams generators and loaders split (for uv or normal) do not cut the surface. An edge
+// with no neighbour gets the triangle's own opposite vertex, which a geometry shader recognises
+// (a_ij == the third corner) as an open border. Zero-area triangles (two
+// corners at one position, as in a UV sphere's pole rows) are skipped as neighbours.
+std::vector<uint32_t> adjacency_indices(const Mesh& mesh);
+
 // Loads .obj (tinyobjloader) or .gltf/.glb (tinygltf). Missing normals/tangents are computed.
 Result<Mesh> load_mesh(const std::filesystem::path& file);
 

@@ -107,6 +107,18 @@ TEST(Order, ReaderWaitsForLastEarlierWriterAndBlocksLaterWriter) {
     EXPECT_EQ(*o, (std::vector<size_t>{0, 1, 2}));
 }
 
+TEST(Order, ReadModifyWritePassesKeepFileOrder) {
+    // Two draws that both add to a counter (atomics: read and write) and both draw into one
+    // colour target: the first counter user is its first writer, not a reader waiting for the
+    // second; no cycle, file order.
+    std::vector<PlanPass> p = {{"first", {}, {"count", "color"}, {"count", "color"}},
+                               {"second", {}, {"count", "color"}, {"count", "color"}},
+                               {"show", {}, {"count"}, {"out"}}};
+    auto o = order_passes(p);
+    ASSERT_TRUE(o) << o.error().format();
+    EXPECT_EQ(*o, (std::vector<size_t>{0, 1, 2}));
+}
+
 TEST(Order, CycleIsNamedWithPassesAndResources) {
     pl::SourceLoc la{"g.toml", 3, 1}, lb{"g.toml", 9, 1};
     std::vector<PlanPass> p = {{"a", la, {"y"}, {"x"}}, {"b", lb, {"x"}, {"y"}}};
