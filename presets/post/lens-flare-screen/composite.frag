@@ -4,17 +4,13 @@
 // filmic curve (which includes the display encoding: its output goes straight to the screen):
 //   hejl(x) = x (6.2x + 0.5) / (x (6.2x + 1.7) + 0.06),  x = max(0, c - 0.004)
 //   vignette = max(0, 1 - |0.5 - uv| / |(0.5, 0.5)|)^0.4
+#include "post/tonemap.glsl"
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 final;
 uniform sampler2D hdr;
 uniform sampler2D flare;
 uniform sampler2D starburst;
 uniform sampler2D dirt;
-
-vec3 hejl(vec3 c) {
-    vec3 x = max(vec3(0.0), c - 0.004);
-    return (x * (6.2 * x + 0.5)) / max(x * (6.2 * x + 1.7) + 0.06, vec3(1e-8));
-}
 
 void main() {
     // 002 turns the starburst with the camera (an angle from its forward and up vectors), so it
@@ -26,5 +22,5 @@ void main() {
     vec3 lens_mod = params.lens_mod ? texture(dirt, uv).rgb + texture(starburst, star_uv).rgb : vec3(1.0);
     vec3 color = texture(hdr, uv).rgb + texture(flare, uv).rgb * lens_mod;
     float vignette = pow(max(0.0, 1.0 - length(vec2(0.5) - uv) / 0.70710678), 0.4);
-    final = vec4(hejl(color * params.exposure * vignette), 1.0);
+    final = vec4(tonemap_hejl(color * params.exposure * vignette), 1.0);
 }
