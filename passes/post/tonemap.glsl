@@ -1,6 +1,7 @@
 // Tone mapping operators shared by the post presets.
 #ifndef PASSLAB_TONEMAP_GLSL
 #define PASSLAB_TONEMAP_GLSL
+#include "common/color.glsl"  // luminance()
 
 // Jim Hejl's filmic curve as printed in 002_644d46bdce7e5305.txt L636-641 (Hejl/Burgess-Dawson):
 //   x = max(0, c - 0.004);  y = x (6.2 x + 0.5) / (x (6.2 x + 1.7) + 0.06)
@@ -13,9 +14,6 @@ vec3 tonemap_hejl(vec3 c) {
 
 // Reinhard's global operator, L / (1 + L) per channel (linear: encode afterwards).
 vec3 tonemap_reinhard(vec3 c) { return c / (1.0 + c); }
-
-// Relative luminance of linear Rec.709 / sRGB primaries.
-float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 // 002 uses autokey() without defining it (L650). Ours: Krawczyk, Myszkowski and Seidel 2005,
 // key = 1.03 - 2 / (2 + log10(L + 1)) with L in cd/m^2: darker scenes get a lower key, so night
