@@ -32,9 +32,20 @@ VkSamplerAddressMode address_of(const std::string& s) {
 }
 
 
-vk::UniqueSampler make_sampler(vk::Context& ctx, const graph::SamplerDesc& s, bool integer) {
-    // Integer formats cannot be filtered linearly.
-    VkFilter f = integer ? VK_FILTER_NEAREST : filter_of(s.filter);
+// Whether the device can filter `format` linearly when sampled (integer formats never can; depth
+// formats often cannot without a compare op).
+bool linear_filterable(vk::Context& ctx, VkFormat format) {
+    VkFormatProperties fp;
+    vkGetPhysicalDeviceFormatProperties(ctx.physical(), format, &fp);
+    return (fp.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
+}
+
+vk::UniqueSampler make_sampler(vk::Context& ctx, const graph::SamplerDesc& s, const vk::FormatInfo& format) {
+    const bool integer = format.is_integer;
+    // What the device cannot filter linearly is sampled with nearest filtering (and nearest mip
+    // selection, which Vulkan also ties to the linear-filter feature) unless a compare op is set.
+    const bool nearest_only = integer || (s.compare.empty() && !linear_filterable(ctx, format.format));
+    VkFilter f = nearest_only ? VK_FILTER_NEAREST : filter_of(s.filter);
     VkBorderColor border = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
     if (s.border == "opaque_black") border = VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK;
     if (s.border == "opaque_white") border = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
@@ -44,7 +55,7 @@ vk::UniqueSampler make_sampler(vk::Context& ctx, const graph::SamplerDesc& s, bo
         .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
         .magFilter = f,
         .minFilter = f,
-        .mipmapMode = (s.mip_filter == "nearest" || integer) ? VK_SAMPLER_MIPMAP_MODE_NEAREST
+        .mipmapMode = (s.mip_filter == "nearest" || nearest_only) ? VK_SAMPLER_MIPMAP_MODE_NEAREST
                                                              : VK_SAMPLER_MIPMAP_MODE_LINEAR,
         .addressModeU = address_of(s.address[0]),
         .addressModeV = address_of(s.address[1]),
@@ -193,7 +204,7 @@ Result<GraphResources> create_resources(vk::Context& ctx, const CompiledGraph& g
                 gi.layers = target.layers;
                 gi.phys = target.phys;
                 gi.history = target.history;
-                gi.sampler = make_sampler(ctx, d.sampler, gi.format->is_integer);
+                gi.sampler = make_sampler(ctx, d.sampler, *gi.format);
                 R.images.emplace(d.name, std::move(gi));
                 continue;
             }
@@ -301,7 +312,7 @@ Result<GraphResources> create_resources(vk::Context& ctx, const CompiledGraph& g
                 gi.phys[static_cast<size_t>(k)] = pi;
             }
             if (!d.history) gi.phys[1] = gi.phys[0];
-            gi.sampler = make_sampler(ctx, d.sampler, gi.format->is_integer);
+            gi.sampler = make_sampler(ctx, d.sampler, *gi.format);
             auto& stored = R.images.emplace(d.name, std::move(gi)).first->second;
             if (pixels) {
                 if (stored.extent.depth > 1 && pixels->depth != static_cast<int>(stored.extent.depth))
