@@ -1,7 +1,9 @@
 #version 450
-// Stage 1 of 002_644d46bdce7e5305.txt L812-822: average each 4x4 block (a quarter-resolution
-// texel), keep what exceeds the threshold, doubled:
-//   bright = max(0, mean_4x4(c) - threshold) * 2
+// The bright pass of 002_644d46bdce7e5305.txt L812-822 (lens flare) and L690-700 (bloom):
+// average each 4x4 block (one quarter-resolution texel), keep what exceeds the threshold
+// (1.0 in HDR: the 0..1 range stays unbloomed), doubled:
+//   bright = max(0, mean_4x4(c) - params.threshold) * 2
+// Reads `hdr`, writes `bright` (bind to rename); the preset declares params.threshold.
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 bright;
 uniform sampler2D hdr;
