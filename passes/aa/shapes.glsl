@@ -40,11 +40,16 @@ vec3 shape_color(int scene, int t) {
 
 float edge_fn(vec2 a, vec2 b, vec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
 
+// How far the square (triangles 0 and 1 of scene 0) has moved: presets that animate it pass
+// its offset; 0 elsewhere.
+vec2 shape_offset(int scene, int t, vec2 square_offset) { return scene == 0 && t < 2 ? square_offset : vec2(0.0); }
+
 // The colour at uv (the last triangle containing it wins, as in draw order); black outside.
-vec3 shape_color_at(int scene, vec2 uv) {
+vec3 shape_color_at(int scene, vec2 uv, vec2 square_offset) {
     vec3 c = vec3(0.0);
     for (int t = 0; t < kShapeTriangles; ++t) {
-        vec2 a = shape_vertex(scene, t, 0), b = shape_vertex(scene, t, 1), d = shape_vertex(scene, t, 2);
+        vec2 o = shape_offset(scene, t, square_offset);
+        vec2 a = shape_vertex(scene, t, 0) + o, b = shape_vertex(scene, t, 1) + o, d = shape_vertex(scene, t, 2) + o;
         float e0 = edge_fn(a, b, uv), e1 = edge_fn(b, d, uv), e2 = edge_fn(d, a, uv);
         bool inside = (e0 >= 0.0 && e1 >= 0.0 && e2 >= 0.0) || (e0 <= 0.0 && e1 <= 0.0 && e2 <= 0.0);
         float area = edge_fn(a, b, d);

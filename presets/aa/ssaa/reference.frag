@@ -17,7 +17,7 @@ void main() {
     for (int y = 0; y < kRef; ++y)
         for (int x = 0; x < kRef; ++x) {
             vec2 p = (gl_FragCoord.xy - 0.5 + (vec2(x, y) + 0.5) / float(kRef)) * frame.resolution.zw;
-            sum += shape_color_at(params.scene, p);
+            sum += shape_color_at(params.scene, p, vec2(0.0));
         }
     reference = vec4(sum / float(kRef * kRef), 1.0);
     error = vec4(abs(texelFetch(result, ivec2(gl_FragCoord.xy), 0).rgb - reference.rgb), 1.0);
