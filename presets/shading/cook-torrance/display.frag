@@ -1,0 +1,9 @@
+#version 450
+// Linear radiance to the sRGB target, with a soft shoulder so highlights keep their shape.
+layout(location = 0) in vec2 uv;
+layout(location = 0) out vec4 ldr;
+uniform sampler2D hdr;
+void main() {
+    vec3 c = texture(hdr, uv).rgb;
+    ldr = vec4(c / (1.0 + c), 1.0);
+}
