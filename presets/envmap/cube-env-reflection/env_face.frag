@@ -1,0 +1,12 @@
+#version 450
+// Face pl_iteration of the cube: for each texel, the direction it stands for, and the
+// environment's radiance there (or the face's flat test colour).
+#include "envmap/cube.glsl"
+#include "envmap/sky.glsl"
+layout(location = 0) in vec2 uv;
+layout(location = 0) out vec4 env;
+const vec3 kFaceColors[6] = vec3[](vec3(1, 0, 0), vec3(0, 1, 1), vec3(0, 1, 0), vec3(1, 0, 1), vec3(0, 0, 1), vec3(1, 1, 0));
+void main() {
+    vec3 d = cube_face_direction(pl_iteration, uv);
+    env = vec4(params.env == ENV_FACES ? kFaceColors[pl_iteration] : sky_radiance(d, params.sun_dir, 1.0), 1.0);
+}
