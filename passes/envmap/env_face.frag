@@ -1,6 +1,7 @@
 #version 450
-// Face pl_iteration of the cube: for each texel, the direction it stands for, and the
-// environment's radiance there (or the face's flat test colour).
+// Face pl_iteration of a cube map (repeat = 6, layer = "iteration"): for each texel, the
+// direction it stands for and the environment's radiance there — or, with params.env ==
+// ENV_FACES, the face's flat test colour. Needs params env (sky|faces) and sun_dir.
 #include "envmap/cube.glsl"
 #include "envmap/sky.glsl"
 layout(location = 0) in vec2 uv;

@@ -1,4 +1,5 @@
 #version 450
+// World position and normal of a mesh drawn at the origin; VISIBLE (an expression) hides it.
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 0) out vec3 v_world;
