@@ -1,7 +1,8 @@
 #version 450
 // Face pl_iteration of a cube map (repeat = 6, layer = "iteration"): for each texel, the
 // direction it stands for and the environment's radiance there — or, with params.env ==
-// ENV_FACES, the face's flat test colour. Needs params env (sky|faces) and sun_dir.
+// ENV_FACES, the face's flat test colour (with ENV_WHITE / ENV_POINT options: radiance 1
+// everywhere, or one bright texel). Needs params env (sky|faces|...) and sun_dir.
 #include "envmap/cube.glsl"
 #include "envmap/sky.glsl"
 layout(location = 0) in vec2 uv;
@@ -10,4 +11,12 @@ const vec3 kFaceColors[6] = vec3[](vec3(1, 0, 0), vec3(0, 1, 1), vec3(0, 1, 0), 
 void main() {
     vec3 d = cube_face_direction(pl_iteration, uv);
     env = vec4(params.env == ENV_FACES ? kFaceColors[pl_iteration] : sky_radiance(d, params.sun_dir, 1.0), 1.0);
+#ifdef ENV_WHITE
+    // The white furnace: radiance 1 in every direction.
+    if (params.env == ENV_WHITE) env = vec4(1.0);
+#endif
+#ifdef ENV_POINT
+    // One bright texel (face +X, texel (3, 4)), black elsewhere: a point-like light.
+    if (params.env == ENV_POINT) env = vec4(vec3(pl_iteration == 0 && ivec2(gl_FragCoord.xy) == ivec2(3, 4) ? 100.0 : 0.0), 1.0);
+#endif
 }
