@@ -149,6 +149,9 @@ Status Executor::render(const FrameInput& in) {
     prev_view_proj_ = fb.view_proj;
     auto params = pack_params(g.desc.params, g.param_layout);
     std::memcpy(params_ubo_.mapped, params.data(), std::min<size_t>(params.size(), params_ubo_.size));
+    run_baked_ = !baked_ || params != baked_params_;
+    baked_ = true;
+    baked_params_ = std::move(params);
 
     VK_CHECK(vkResetDescriptorPool(ctx_.device(), pool_, 0));
     VK_CHECK(vkResetCommandBuffer(cmd_, 0));
@@ -247,7 +250,8 @@ Status Executor::record_frame(VkCommandBuffer cb, const FrameInput&) {
         ctx_.set_label("pass '" + cp.desc->name + "'");
         if (timestamps_)
             vkCmdWriteTimestamp2(cb, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, queries_, static_cast<uint32_t>(2 * i));
-        for (int it = 0; cp.desc->enabled && it < cp.repeat; ++it)
+        const bool skip = cp.desc->bake && !run_baked_;  // baked: its images still hold the result
+        for (int it = 0; cp.desc->enabled && !skip && it < cp.repeat; ++it)
             if (auto s = record_pass(cb, i, it); !s) return s;
         if (timestamps_)
             vkCmdWriteTimestamp2(cb, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, queries_, static_cast<uint32_t>(2 * i + 1));

@@ -87,6 +87,11 @@ class Executor {
     std::vector<std::shared_ptr<PassPipeline>> pipelines_;
     std::vector<std::string> rebuilt_;
     double record_ms_ = 0.0;
+    // `bake = true` passes run on this executor's first frame, then only when the params block
+    // differs from the one they last ran with.
+    bool baked_ = false;
+    std::vector<uint8_t> baked_params_;
+    bool run_baked_ = true;  // this frame
     vk::Buffer frame_ubo_, params_ubo_;
     vk::UniqueDescriptorPool pool_;
     vk::UniqueCommandPool cmd_pool_;

@@ -216,6 +216,7 @@ struct PassDesc {
     std::string filter = "linear";     // blit filter
 
     bool enabled = true;
+    bool bake = false;  // run on an executor's first frame and again only when a param changes
     KeyLocs keys;  // "mesh", "indirect", "src", "dst", "image", "groups", "kind", ...
 };
 

@@ -318,6 +318,7 @@ Status parse_pass_body(const toml::table& t, const std::string& file, GraphDesc&
     if (auto s = r.str("image", p.image); !s) return s;
     if (auto s = r.choice("filter", p.filter, {"linear", "nearest"}); !s) return s;
     if (auto s = r.boolean("enabled", p.enabled); !s) return s;
+    if (auto s = r.boolean("bake", p.bake); !s) return s;
     return r.finish();
 }
 

@@ -14,7 +14,7 @@ namespace pl::graph {
 namespace {
 
 
-// The keys each kind uses besides name, kind, enabled, repeat and swap. A key written on a kind
+// The keys each kind uses besides name, kind, enabled, bake, repeat and swap. A key written on a kind
 // that ignores it is an error: `groups` on a fullscreen pass is a misunderstanding to point out,
 // not something to drop silently.
 const std::set<std::string>& kind_keys(PassKind k) {
@@ -70,7 +70,7 @@ struct PassChecker {
 
     Status kind_and_keys() const {
         const auto& allowed = kind_keys(p.kind);
-        static const std::set<std::string> always = {"name", "kind", "enabled", "repeat", "swap"};
+        static const std::set<std::string> always = {"name", "kind", "enabled", "bake", "repeat", "swap"};
         for (const auto& [key, loc] : p.keys.map) {
             std::string top = key.substr(0, key.find('.'));
             if (always.count(top) || allowed.count(top)) continue;
