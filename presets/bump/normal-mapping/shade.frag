@@ -1,0 +1,25 @@
+#version 450
+// Normal mapping (000_c9f7e5de708ecbb3.txt L2490-2553; 001_fe43b953f362fae7.txt L463-490):
+// the map's RGB decoded to a tangent-space normal n' = 2 c - 1, brought to world space with the
+// interpolated frame (T, B, N), then Blinn-Phong with it: max(l.n', 0) and max(h.n', 0)^s.
+// (000 transforms l and h into tangent space per vertex instead; the result is the same up to
+// interpolation — here the frame is interpolated and l, h stay in world space.)
+layout(location = 0) in vec3 v_world;
+layout(location = 1) in vec2 v_uv;
+layout(location = 2) in vec3 v_t;
+layout(location = 3) in vec3 v_b;
+layout(location = 4) in vec3 v_n;
+layout(location = 0) out vec4 hdr;
+uniform sampler2D nmap;
+uniform sampler2D nmap_flat;
+void main() {
+    mat3 tbn = mat3(normalize(v_t), normalize(v_b), normalize(v_n));
+    vec4 texel = params.mode == MODE_FLAT_MAP ? texture(nmap_flat, v_uv) : texture(nmap, v_uv);
+    vec3 n = params.mode == MODE_GEOMETRIC ? normalize(v_n) : normalize(tbn * (texel.xyz * 2.0 - 1.0));
+    vec3 l = normalize(params.light_dir), v = normalize(frame.camera_pos.xyz - v_world), h = normalize(l + v);
+    float diff = max(dot(l, n), 0.0), spec = diff > 0.0 ? pow(max(dot(h, n), 0.0), params.shininess) : 0.0;
+    vec3 c = params.albedo * (0.08 + diff) + vec3(0.35 * spec);
+    if (params.show == SHOW_NORMALS) c = n * 0.5 + 0.5;
+    if (params.show == SHOW_HEIGHT) c = vec3(texture(nmap, v_uv).a);
+    hdr = vec4(c, 1.0);
+}
