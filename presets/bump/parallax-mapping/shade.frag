@@ -1,0 +1,32 @@
+#version 450
+// Parallax mapping (passes/bump/parallax.glsl): the eye vector into tangent space, the lookup
+// point shifted, then colour and normal read at T_n and lit (Blinn-Phong).
+#include "bump/parallax.glsl"
+layout(location = 0) in vec3 v_world;
+layout(location = 1) in vec2 v_uv;
+layout(location = 2) in vec3 v_t;
+layout(location = 3) in vec3 v_b;
+layout(location = 4) in vec3 v_n;
+layout(location = 0) out vec4 hdr;
+layout(location = 1) out float offset;
+uniform sampler2D nmap;
+
+vec3 tile_color(vec2 t) {  // a procedural albedo: tiles in two tones, dark grout
+    vec2 cell = floor(t * 4.0);
+    float h = texture(nmap, t).a;
+    vec3 c = mod(cell.x + cell.y, 2.0) < 1.0 ? vec3(0.75, 0.5, 0.32) : vec3(0.6, 0.62, 0.66);
+    return mix(vec3(0.12, 0.1, 0.09), c, smoothstep(0.2, 0.6, h));
+}
+
+void main() {
+    mat3 tbn = mat3(normalize(v_t), normalize(v_b), normalize(v_n));
+    vec3 V = normalize(transpose(tbn) * (frame.camera_pos.xyz - v_world));  // tangent space
+    vec2 t = params.mode == MODE_PLAIN ? v_uv : parallax_uv(nmap, v_uv, V, params.scale, params.mode == MODE_LIMITED);
+    offset = length(t - v_uv);
+    vec3 n = normalize(tbn * (texture(nmap, t).xyz * 2.0 - 1.0));
+    vec3 l = normalize(params.light_dir), v = normalize(frame.camera_pos.xyz - v_world), h = normalize(l + v);
+    float diff = max(dot(l, n), 0.0), spec = diff > 0.0 ? pow(max(dot(h, n), 0.0), 48.0) : 0.0;
+    vec3 c = tile_color(t) * (0.08 + diff) + vec3(0.25 * spec);
+    if (params.show == SHOW_OFFSET) c = vec3(offset / max(0.5 * params.scale, 1e-6));
+    hdr = vec4(c, 1.0);
+}
