@@ -39,4 +39,50 @@ float gradient_noise(vec3 p) {
                mix(mix(n001, n101, u.x), mix(n011, n111, u.x), u.y), u.z);
 }
 
+// 2D simplex noise (004_9a40ad89bdfc582a.txt L391-443; Gustavson, "Simplex noise demystified"):
+// the plane tiled by triangles (the square grid skewed by F2 = (sqrt 3 - 1)/2), the point's
+// triangle found from the skewed cell and the order of its coordinates, and only its 3 corners
+// contribute, each with a radial kernel (0.5 - r^2)^4 times dot(gradient, offset). O(d + 1)
+// corners instead of 2^d. Range about [-1, 1] (scale 70); exactly 0 at every corner: a corner's
+// own term is dot(g, 0) and its neighbours are 2/3 away in r^2, beyond the kernel's 0.5.
+const float kSimplexF2 = 0.36602540378;  // (sqrt(3) - 1) / 2
+const float kSimplexG2 = 0.21132486540;  // (3 - sqrt(3)) / 6
+vec2 simplex_corner(vec2 skewed_cell) { return skewed_cell - (skewed_cell.x + skewed_cell.y) * kSimplexG2; }
+float simplex_noise(vec2 p) {
+    vec2 i = floor(p + (p.x + p.y) * kSimplexF2);       // skewed cell
+    vec2 x0 = p - simplex_corner(i);                      // offset from its first corner
+    vec2 o = x0.x > x0.y ? vec2(1.0, 0.0) : vec2(0.0, 1.0);  // lower or upper triangle
+    vec2 x1 = x0 - o + kSimplexG2, x2 = x0 - 1.0 + 2.0 * kSimplexG2;
+    float n = 0.0;
+    vec2 corners[3] = vec2[](i, i + o, i + 1.0);
+    vec2 offsets[3] = vec2[](x0, x1, x2);
+    for (int k = 0; k < 3; ++k) {
+        float t = 0.5 - dot(offsets[k], offsets[k]);
+        if (t > 0.0) {
+            float a = 6.2831853 * hash_pcg(vec3(corners[k], 7.0));
+            n += t * t * t * t * dot(vec2(cos(a), sin(a)), offsets[k]);
+        }
+    }
+    return 70.0 * n;
+}
+
+// Worley (cellular) noise (004_9a40ad89bdfc582a.txt L508-579): one feature point per unit cell,
+// jittered by a hash of the cell; F_k = distance to the k-th nearest. Returns (F1, F2, F3). The
+// listing searches 3x3 cells (enough for F1, which is at most sqrt 2: the own cell's point is
+// never farther than the cell's diagonal); F2 and F3 can lie further out, so we search 5x5
+// (TECHNIQUES.md pitfall). The listing's `frac` is HLSL; GLSL's is fract.
+vec2 worley_point(vec2 cell) { return cell + hash_pcg3(vec3(cell, 3.0)).xy; }
+vec3 worley_noise(vec2 p) {
+    vec2 c = floor(p);
+    vec3 f = vec3(1e9);  // F1 <= F2 <= F3, kept sorted
+    for (int y = -2; y <= 2; ++y)
+        for (int x = -2; x <= 2; ++x) {
+            float d = length(worley_point(c + vec2(x, y)) - p);
+            if (d < f.x) f = vec3(d, f.x, f.y);
+            else if (d < f.y) f = vec3(f.x, d, f.y);
+            else if (d < f.z) f.z = d;
+        }
+    return f;
+}
+
 #endif
