@@ -1,0 +1,33 @@
+#version 450
+// Gather (000_c9f7e5de708ecbb3.txt L3126-3139): each pixel averages neighbours on a disc of the
+// largest blur radius around; a neighbour counts if its own circle of confusion reaches this
+// pixel (scatter-as-gather). The problem the document names — "sharp foreground objects leak on
+// blurry background" — is handled by its solution, depth-aware filtering: a neighbour behind
+// this pixel may contribute only as far as this pixel's own circle reaches, so a blurred
+// background does not smear over an in-focus object in front of it, nor the reverse.
+layout(location = 0) in vec2 uv;
+layout(location = 0) out vec4 result;
+uniform sampler2D color;
+uniform sampler2D coc;
+uniform sampler2D depth;
+const float kMaxRadius = 24.0;  // pixels
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy), last = textureSize(color, 0) - 1;
+    float h = frame.resolution.y;
+    float r_here = min(abs(texelFetch(coc, px, 0).x) * h, kMaxRadius);
+    float d_here = texelFetch(depth, px, 0).r;
+    vec3 sum = texelFetch(color, px, 0).rgb;
+    float wsum = 1.0;
+    int n = params.samples;
+    for (int i = 0; i < n; ++i) {
+        // A spiral over the disc of the largest radius (golden angle: even coverage).
+        float fr = sqrt((float(i) + 0.5) / float(n)) * kMaxRadius, a = float(i) * 2.39996;
+        ivec2 q = clamp(px + ivec2(round(fr * vec2(cos(a), sin(a)))), ivec2(0), last);
+        float dist = length(vec2(q - px));
+        float r_q = min(abs(texelFetch(coc, q, 0).x) * h, kMaxRadius);
+        float reach = texelFetch(depth, q, 0).r > d_here ? min(r_q, r_here) : r_q;  // behind: limited
+        float w = clamp(reach - dist + 0.5, 0.0, 1.0);
+        sum += w * texelFetch(color, q, 0).rgb, wsum += w;
+    }
+    result = vec4(sum / wsum, 1.0);
+}
