@@ -80,6 +80,8 @@ std::vector<std::string> DeviceFeatures::names() const {
     add(draw_indirect_first_instance, "draw_indirect_first_instance");
     add(sample_rate_shading, "sample_rate_shading");
     add(shader_output_layer, "shader_output_layer");
+    add(shader_clip_distance, "shader_clip_distance");
+    add(shader_cull_distance, "shader_cull_distance");
     return out;
 }
 
@@ -272,6 +274,8 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& opt) {
     use.shaderInt64 = have.shaderInt64;
     use.shaderImageGatherExtended = have.shaderImageGatherExtended;
     use.largePoints = have.largePoints;
+    use.shaderClipDistance = have.shaderClipDistance;
+    use.shaderCullDistance = have.shaderCullDistance;
     f2.features = use;
     VkPhysicalDeviceVulkan13Features e13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     e13.dynamicRendering = VK_TRUE;
@@ -323,6 +327,8 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& opt) {
     F.draw_indirect_first_instance = use.drawIndirectFirstInstance;
     F.sample_rate_shading = use.sampleRateShading;
     F.shader_output_layer = f12.shaderOutputLayer;
+    F.shader_clip_distance = use.shaderClipDistance;
+    F.shader_cull_distance = use.shaderCullDistance;
     F.max_anisotropy = use.samplerAnisotropy ? ctx->props_.limits.maxSamplerAnisotropy : 1.0f;
 
     float priority = 1.0f;

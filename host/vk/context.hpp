@@ -38,6 +38,8 @@ struct DeviceFeatures {
     bool multi_draw_indirect = false, draw_indirect_first_instance = false;
     bool sample_rate_shading = false;
     bool shader_output_layer = false;       // gl_Layer from vertex stage (Vulkan 1.2)
+    bool shader_clip_distance = false;      // gl_ClipDistance (user clip planes: mirrors, portals)
+    bool shader_cull_distance = false;      // gl_CullDistance
     float max_anisotropy = 1.0f;
     std::vector<std::string> names() const;  // the true ones, as used in `requires`
     bool has(const std::string& name) const;
