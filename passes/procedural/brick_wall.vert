@@ -1,4 +1,5 @@
 #version 450
+// Wall vertex stage shared by presets/procedural/brick and presets/procedural/brick-noisy.
 // The plane mesh lies in XZ; we stand it up (a rotation of -90 degrees about x) so that the
 // wall's model coordinates are (x, y) = (position.x, -position.z), facing +Z.
 // 004_9a40ad89bdfc582a.txt L128-200: pass the model-space position to the fragment shader, so
