@@ -1,0 +1,32 @@
+#version 450
+// Vertex stage of the scene (scene.glsl), in three versions chosen by defines:
+//   CUBE_FACE_ITERATION: one face per pass iteration (repeat = 6, layer = "iteration"):
+//                        clip = cube_face_clip(pl_iteration, ...), the face's 90 degree camera;
+//   LAYERED:             world position only, the geometry shader (cube_layers.geom) projects
+//                        every triangle onto all 6 faces in one pass;
+//   neither:             the main camera.
+// ACTIVE (an expression) switches the cube-map version off without removing its pass.
+#include "scene.glsl"
+#include "envmap/cube_face_camera.glsl"
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 0) out vec3 v_world;
+layout(location = 1) out vec3 v_normal;
+layout(location = 2) flat out int v_instance;
+#ifndef ACTIVE
+#define ACTIVE true
+#endif
+void main() {
+    int i = gl_InstanceIndex;
+    v_world = scene_world(position, i, frame.time);
+    v_normal = scene_normal(normal, i, frame.time);
+    v_instance = i;
+#if defined(CUBE_FACE_ITERATION)
+    gl_Position = cube_face_clip(pl_iteration, v_world - kCubeCentre, kCubeNear, kCubeFar);
+#elif defined(LAYERED)
+    gl_Position = vec4(v_world, 1.0);  // unused: the geometry shader writes the clip position
+#else
+    gl_Position = frame.view_proj * vec4(v_world, 1.0);
+#endif
+    if (!(ACTIVE) || !scene_visible(i)) gl_Position = vec4(0.0, 0.0, -2.0, 1.0);
+}
