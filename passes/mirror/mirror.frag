@@ -30,9 +30,11 @@ void main() {
 #ifdef RTT_DISTORT
     st += RTT_DISTORT;  // an expression: offsets for fuzzy / rippled reflections (000 L3911-3914)
 #endif
-    vec3 refl = texture(RTT, st).rgb;
+    vec4 texel = texture(RTT, st);
+    vec3 refl = texel.rgb;
+    float refl_height = texel.a;  // what the RTT pass stored in alpha (the reflected point's height)
 #ifdef RTT_FADE
-    refl = mix(refl, tint, RTT_FADE);  // an expression in [0, 1]: fade with distance (000 L3912)
+    refl = mix(refl, tint, RTT_FADE);  // an expression in [0, 1] of refl_height: fade (000 L3912)
 #endif
     hdr = vec4(mix(tint, refl, params.reflectivity), 1.0);
 #else

@@ -2,6 +2,7 @@
 // Shades the mirror scene (scene.glsl) at the unreflected point v_world, seen from EYE (the
 // view's eye, or its mirror image for a reflection: what the mirror shows is the real surface
 // seen from the reflected eye). ALBEDO is an expression (kAlbedo[i] or the frame's colour).
+// ALPHA (optional expression) goes to the alpha channel (RTT: the height above the mirror).
 // Optional second target MASK_TARGET: 1 wherever this pass wrote a fragment (the leak test).
 // Optional GBUFFER: second target = world normal and the reflection map value (SSR).
 #include "mirror/mirror.glsl"
@@ -26,7 +27,10 @@ layout(location = 1) out vec4 GBUFFER;  // xyz world normal, w reflection map
 #endif
 void main() {
     vec3 n = normalize(v_normal);
-    hdr = vec4(shade(v_world, n, EYE, ALBEDO, SPECULAR), 1.0);
+#ifndef ALPHA
+#define ALPHA 1.0
+#endif
+    hdr = vec4(shade(v_world, n, EYE, ALBEDO, SPECULAR), ALPHA);
 #ifdef MASK_TARGET
     MASK_TARGET = vec4(1.0);
 #endif

@@ -4,6 +4,7 @@
 //   EYE            its position
 //   REFLECTED      1: the sky as the mirror shows it: the direction reflected by the plane
 //                  (the stencil method's reflected background, drawn only where stencil = 1)
+//   ALPHA          optional expression for the alpha channel (default 1)
 //   MASK_TARGET    optional second target: 1 wherever this pass wrote (the leak test)
 #include "mirror/mirror.glsl"
 #include "mirror/scene.glsl"
@@ -31,7 +32,10 @@ void main() {
 #if REFLECTED
     d = mirror_direction(d);
 #endif
-    hdr = vec4(sky_color(d), 1.0);
+#ifndef ALPHA
+#define ALPHA 1.0
+#endif
+    hdr = vec4(sky_color(d), ALPHA);
 #ifdef MASK_TARGET
     MASK_TARGET = vec4(1.0);
 #endif
