@@ -98,6 +98,13 @@ int main(int argc, char** argv) {
     graph_cmd->add_flag("--dot", dot, "Graphviz dot output (the only format so far)");
     add_common(graph_cmd);
 
+    NewOptions no;
+    auto* new_cmd = app.add_subcommand("new", "Start a preset from a copy of another (never overwrites)");
+    new_cmd->add_option("dest", no.dest, "New preset folder (must not exist)")->required();
+    new_cmd->add_option("--from", no.from, "Preset to copy: folder, preset.toml, or name")->required();
+    new_cmd->add_flag("--with-passes", no.with_passes, "Also copy the passes/ files it reads, to edit them locally");
+    add_common(new_cmd);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -113,5 +120,6 @@ int main(int argc, char** argv) {
     if (run_cmd->parsed()) return run(rn, common);
     if (gallery_cmd->parsed()) return gallery(gallery_dir, gallery_width, common);
     if (graph_cmd->parsed()) return graph_dot(preset, common);
+    if (new_cmd->parsed()) return new_preset(no, common);
     return 2;
 }

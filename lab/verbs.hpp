@@ -66,7 +66,14 @@ struct BenchOptions {
     std::string json;  // --json FILE
 };
 
+struct NewOptions {
+    std::string dest;        // the new preset folder (must not exist)
+    std::string from;        // PRESET to copy
+    bool with_passes = false;  // also copy the passes/ files it reads (they shadow the library)
+};
+
 int render(const RenderOptions& o, const CommonOptions& c);
+int new_preset(const NewOptions& o, const CommonOptions& c);
 int bench(const BenchOptions& o, const CommonOptions& c);
 int run(const RunOptions& o, const CommonOptions& c);
 int test(const TestOptions& o, const CommonOptions& c);

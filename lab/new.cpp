@@ -1,0 +1,103 @@
+// `passlab new DEST --from PRESET`: start a preset from a copy of another one.
+//
+// The copy is a plain folder the user owns: every file of the source preset folder (shaders,
+// README, goldens, files), so `passlab run DEST` works at once and its tests still pass.
+// `--with-passes` also copies the files the preset reads from the shared passes/ library into
+// DEST at the same relative path; shader lookup tries the preset folder before passes/, so those
+// copies shadow the library and can be edited without touching other presets.
+//
+// Never overwrites: DEST must not exist (the host writes user files only where asked).
+#include "verbs.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+
+namespace fs = std::filesystem;
+
+namespace pl::lab {
+namespace {
+
+Error usage_error(std::string msg) {
+    Error e = make_error(std::move(msg));
+    e.code = ExitCode::usage;
+    return e;
+}
+
+Error env_error(std::string msg) {
+    Error e = make_error(std::move(msg));
+    e.code = ExitCode::environment;
+    return e;
+}
+
+// True when `p` lies inside `dir` (both made absolute and normalised first).
+bool is_inside(const fs::path& p, const fs::path& dir) {
+    auto rel = fs::weakly_canonical(p).lexically_relative(fs::weakly_canonical(dir));
+    return !rel.empty() && *rel.begin() != "..";
+}
+
+} // namespace
+
+int new_preset(const NewOptions& o, const CommonOptions& c) {
+    if (o.dest.empty()) return report(usage_error("passlab new: DEST is empty"));
+    fs::path dest = o.dest;
+    std::error_code ec;
+    if (fs::exists(dest, ec) || fs::is_symlink(dest, ec))
+        return report(usage_error("passlab new: '" + dest.string() +
+                                  "' already exists; passlab never overwrites files (choose a new folder)"));
+
+    auto toml = exec::resolve_preset(o.from);
+    if (!toml) return report(toml.error());
+    const fs::path src = toml->parent_path();
+
+    // Build the source first: a broken source is reported here, not discovered after copying,
+    // and the build lists every file the preset reads (for --with-passes).
+    exec::BuildOptions bo;
+    bo.cache_dir = cache_dir(c);
+    auto built = exec::build_graph(*toml, bo);
+    if (!built) return report(built.error());
+
+    if (is_inside(dest, src))
+        return report(usage_error("passlab new: '" + dest.string() + "' lies inside the source preset " +
+                                  src.string()));
+
+    fs::create_directories(dest.parent_path().empty() ? fs::path(".") : dest.parent_path(), ec);
+    if (!fs::create_directory(dest, ec) || ec)
+        return report(env_error("passlab new: cannot create '" + dest.string() + "': " + ec.message()));
+
+    int copied = 0;
+    for (auto it = fs::recursive_directory_iterator(src, ec); !ec && it != fs::recursive_directory_iterator();
+         it.increment(ec)) {
+        const auto rel = it->path().lexically_relative(src);
+        // The param sidecar holds someone's slider positions, not part of the preset.
+        if (rel == "preset.params.toml") continue;
+        if (it->is_directory()) {
+            fs::create_directories(dest / rel, ec);
+        } else if (it->is_regular_file()) {
+            fs::copy_file(it->path(), dest / rel, fs::copy_options::none, ec);
+            ++copied;
+        }
+        if (ec) break;
+    }
+    if (ec) return report(env_error("passlab new: copying " + src.string() + " failed: " + ec.message()));
+    std::printf("copied %d files of %s into %s\n", copied, src.string().c_str(), dest.string().c_str());
+
+    if (o.with_passes) {
+        const fs::path lib = exec::passes_dir();
+        int shadowed = 0;
+        for (const auto& dep : built->dependencies) {
+            if (!is_inside(dep, lib)) continue;
+            const auto rel = fs::weakly_canonical(dep).lexically_relative(fs::weakly_canonical(lib));
+            fs::create_directories((dest / rel).parent_path(), ec);
+            if (!ec) fs::copy_file(dep, dest / rel, fs::copy_options::skip_existing, ec);
+            if (ec) return report(env_error("passlab new: copying " + dep.string() + " failed: " + ec.message()));
+            std::printf("  passes/%s -> %s\n", rel.string().c_str(), (dest / rel).string().c_str());
+            ++shadowed;
+        }
+        std::printf("copied %d files of passes/ (they shadow the library for this preset)\n", shadowed);
+    }
+    std::printf("next: passlab run %s\n", dest.string().c_str());
+    return 0;
+}
+
+} // namespace pl::lab
