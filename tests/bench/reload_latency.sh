@@ -27,10 +27,13 @@ salt=$(( $(date +%s%N | cut -c8-13) % 9000 + 1000 ))  # 4 digits
 k=1
 while [ $k -le "$edits" ]; do
   sed "s|/\*KNOB\*/[0-9.]*|/*KNOB*/$k.$salt|" "$shader" > "$shader.tmp~"
-  before=$(count reload-ok)
+  before=$(count first_after_reload)
   date +%s%3N >> "$work/edits"
   mv "$shader.tmp~" "$shader"
-  i=0; while [ "$(count reload-ok)" -le "$before" ]; do i=$((i+1)); [ $i -lt 300 ] || { echo "no reload" >&2; exit 1; }; sleep 0.02; done
+  # Wait for the first frame drawn with the new code, then let the lab settle, so that an edit
+  # never lands while the previous reload's frame (llvmpipe compiling at first draw) is still
+  # running: that would count the previous reload's time as this one's detection.
+  i=0; while [ "$(count first_after_reload)" -le "$before" ]; do i=$((i+1)); [ $i -lt 500 ] || { echo "no reload" >&2; exit 1; }; sleep 0.02; done
   sleep 0.3
   k=$((k + 1))
 done
