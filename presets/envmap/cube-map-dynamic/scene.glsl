@@ -3,6 +3,7 @@
 // box (instance N_CUBES) whose colour is the environment in the direction from the centre.
 // Everything moves with frame.time, which is why the cube map is re-rendered every frame.
 #include "envmap/sky.glsl"
+#include "envmap/smooth_env.glsl"
 const int kCubes = 6;              // orbiting boxes
 const float kOrbit = 1.35;         // their distance from the mirror ball's centre (the cube map's centre)
 const vec3 kCubeCentre = vec3(0.0);  // the cube map's camera sits at the mirror ball's centre
@@ -26,11 +27,10 @@ vec3 scene_normal(vec3 n, int i, float t) {
     return (scene_world(n, i, t) - scene_world(vec3(0.0), i, t)) / kBoxSize;  // the rotation only
 }
 
-// The environment in world direction d: the procedural sky, or (SKY_SMOOTH) a smooth field
-// 0.5 + 0.35 d whose colour names the direction (red +x, green +y, blue +z), for the seam test.
+// The environment in world direction d: the procedural sky, or (SKY_SMOOTH) the smooth field
+// 0.5 + 0.35 d of smooth_env.glsl, whose colour names the direction, for the seam test.
 vec3 scene_environment(vec3 d) {
-    d = normalize(d);
-    return params.sky == SKY_SMOOTH ? 0.5 + 0.35 * d : sky_radiance(d, params.sun_dir, 1.0);
+    return params.sky == SKY_SMOOTH ? smooth_environment(d) : sky_radiance(d, params.sun_dir, 1.0);
 }
 
 vec3 scene_albedo(int i) {
