@@ -1,0 +1,20 @@
+#version 450
+// Renders a test scene of passes/aa/post_scene.glsl with one sample per pixel (`color`) and its
+// coverage-weighted reference (`reference`). SCENE: the scene (an int expression, e.g.
+// params.scene); LINE: the staircase's (slope, offset) in pixels (a vec2 expression);
+// SUPERSAMPLE: a bool expression, whether the shapes and checker get their 8 x 8 reference
+// (slow: only when a view or test needs it).
+#include "aa/post_scene.glsl"
+#ifndef LINE
+#define LINE vec2(0.25, 0.37)
+#endif
+#ifndef SUPERSAMPLE
+#define SUPERSAMPLE true
+#endif
+layout(location = 0) out vec4 color;
+layout(location = 1) out vec4 reference;
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    color = vec4(aa_scene_color(SCENE, px, LINE, frame.resolution.xy), 1.0);
+    reference = vec4(aa_scene_reference(SCENE, px, LINE, frame.resolution.xy, SUPERSAMPLE), 1.0);
+}
