@@ -7,6 +7,7 @@
 // RTT (define RTT = the reflection texture's name): the reflection is looked up in the texture
 // the mirrored camera rendered, at the mirror point projected by that camera (projective
 // texturing, 000 L3946-3964), and mixed here; no blending.
+// GBUFFER (a target name): the deferred form for SSR: own colour into hdr, normal + map there.
 // MASK_TARGET (optional): 1 where the mirror covers the pixel (the stencil mask, readable).
 #include "mirror/mirror.glsl"
 layout(location = 0) in vec3 v_world;
@@ -17,6 +18,9 @@ layout(location = 1) out vec4 MASK_TARGET;
 #endif
 #ifdef RTT
 uniform sampler2D RTT;
+#endif
+#ifdef GBUFFER
+layout(location = 1) out vec4 GBUFFER;  // deferred (SSR): xyz world normal, w reflection map
 #endif
 #ifndef VISIBLE
 #define VISIBLE true
@@ -37,6 +41,11 @@ void main() {
     refl = mix(refl, tint, RTT_FADE);  // an expression in [0, 1] of refl_height: fade (000 L3912)
 #endif
     hdr = vec4(mix(tint, refl, params.reflectivity), 1.0);
+#elif defined(GBUFFER)
+    // The lit image shows the mirror's own colour; the reflection map says how much of the
+    // reflection a later pass mixes in: c = mix(lit, reflection, map) (000 L3995-4000).
+    hdr = vec4(tint, 1.0);
+    GBUFFER = vec4(normalize(v_normal), params.reflectivity);
 #else
     hdr = vec4(tint, 1.0 - params.reflectivity);
 #endif

@@ -6,7 +6,8 @@
 //              front_face = "cw" because det M = -1 turns counter-clockwise triangles clockwise)
 //   VIEW_PROJ  the camera (default: the view's; the render-to-texture pass gives the mirrored one)
 //   CLIP       1: gl_ClipDistance[0] = signed distance of the *unreflected* point to the mirror
-//              plane, so whatever lies behind the mirror is cut away (needs shader_clip_distance)
+//              plane, so whatever lies behind the mirror is cut away (needs shader_clip_distance);
+//              switched by params.clip unless CLIP_ALWAYS is defined
 //   VISIBLE    an expression; false parks the object outside the view volume
 // Outputs the unreflected world position and normal: shading happens in the real world, seen
 // from the eye the reflection implies (mirror_point(eye)), which is what a mirror shows.
@@ -43,7 +44,11 @@ void main() {
 #endif
     gl_Position = (VIEW_PROJ) * q;
 #if CLIP
-    gl_ClipDistance[0] = params.clip ? mirror_side(p) : 1.0;
+#ifdef CLIP_ALWAYS
+    gl_ClipDistance[0] = mirror_side(p);
+#else
+    gl_ClipDistance[0] = params.clip ? mirror_side(p) : 1.0;  // the preset's `clip` param
+#endif
 #endif
     if (!(VISIBLE)) gl_Position = vec4(0.0, 0.0, -2.0, 1.0);
 }
