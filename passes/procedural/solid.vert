@@ -7,6 +7,8 @@
 // M^-1 M = I exactly, while the fragment still gets the moved world position and normal. So a
 // carried image must not change with MOTION as long as the shading reads only object-space
 // values and what moves with the object (light and camera are carried too, in the fragment).
+// With ACTIVE defined (an expression) the pass draws nothing unless it is true: every vertex
+// goes outside the clip volume, so a test-only pass costs no fragment work when it is off.
 #include "procedural/rigid.glsl"
 #ifndef MOTION
 #define MOTION 0.0
@@ -28,5 +30,8 @@ void main() {
     gl_Position = (CARRIED) ? frame.view_proj * vec4(centre + position, 1.0) : vec4(2.0, 2.0, 2.0, 1.0);
 #else
     gl_Position = frame.view_proj * vec4(a_position_world, 1.0);
+#endif
+#ifdef ACTIVE
+    if (!(ACTIVE)) gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
 #endif
 }
