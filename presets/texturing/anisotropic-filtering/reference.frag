@@ -1,0 +1,23 @@
+#version 450
+// The reference: the texture averaged over the pixel's square, ref_grid x ref_grid stratified
+// sub-pixel positions (16 x 16 = 256 per pixel by default), each ray-cast to the plane and
+// sampled bilinearly from level 0. This is the box filter over the true footprint that every
+// real-time filter approximates. Alpha = the fraction of sub-samples on the plane.
+#include "ground.glsl"
+layout(location = 0) out vec4 reference_out;
+uniform sampler2D tex_level0;
+void main() {
+    int n = params.ref_grid;
+    vec3 sum = vec3(0.0);
+    float hits = 0.0;
+    vec2 corner = floor(gl_FragCoord.xy);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            vec2 t;
+            if (ground_uv(corner + (vec2(i, j) + 0.5) / float(n), t)) {
+                sum += textureLod(tex_level0, t, 0.0).rgb;
+                hits += 1.0;
+            }
+        }
+    reference_out = hits > 0.0 ? vec4(sum / hits, hits / float(n * n)) : vec4(0.0);
+}
