@@ -1,5 +1,5 @@
 #version 450
-// Display of the brick presets: the lit wall (rgba16f), clamped to [0, 1] into the sRGB target.
+// Display of the procedural presets: an rgba16f image (bound as hdr), clamped to [0, 1] into the sRGB target.
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 color;
 uniform sampler2D hdr;
