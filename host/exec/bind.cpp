@@ -147,6 +147,9 @@ Status bind_pass(const graph::GraphDesc& desc, CompiledPass& cp) {
                 suggest(e, name, names, "images", "the graph declares no [images]");
                 return e;
             }
+            // An alias has only its own sampler: kind, format and layers are its target's.
+            if (!img->alias.empty())
+                if (const graph::ImageDesc* target = desc.find_image(img->alias)) img = target;
             const vk::FormatInfo* fi = vk::find_format(img->format);
             if (!dim_matches(b, *img))
                 return err("'" + name + "' is a " + kind_name(img->kind) +

@@ -80,6 +80,8 @@ class Executor {
     struct Impl;
     Status record_frame(VkCommandBuffer cb, const FrameInput& in);
     Status record_pass(VkCommandBuffer cb, size_t pass, int iteration);
+    Status record_buffer_image_copy(VkCommandBuffer cb, const graph::PassDesc& pd, PhysBuffer* b,
+                                    PhysImage* p, const vk::FormatInfo* f, bool to_image);
 
     vk::Context& ctx_;
     std::unique_ptr<CompiledGraph> graph_;

@@ -24,6 +24,32 @@ VkExtent2D mip_extent(const vk::ImageInfo& info, uint32_t mip) {
 
 } // namespace
 
+// A copy between a buffer and mip 0 of an image (every layer): the buffer holds the texels
+// tightly packed row by row, or for a block-compressed image its blocks (BC1: 8 bytes per 4x4
+// texels), which is how a compute pass can encode a texture that the sampler then decodes.
+Status Executor::record_buffer_image_copy(VkCommandBuffer cb, const graph::PassDesc& pd, PhysBuffer* b, PhysImage* p,
+                                          const vk::FormatInfo* f, bool to_image) {
+    const std::string& img_name = to_image ? pd.dst : pd.src;
+    const auto& info = p->image.info();
+    const uint32_t blk = static_cast<uint32_t>(f->block);
+    const VkDeviceSize need = VkDeviceSize((info.extent.width + blk - 1) / blk) * ((info.extent.height + blk - 1) / blk) *
+                              info.extent.depth * info.layers * static_cast<VkDeviceSize>(f->bytes_per_texel);
+    if (b->buffer.size < need)
+        return pass_error(pd, "buffer '" + (to_image ? pd.src : pd.dst) + "' has " + std::to_string(b->buffer.size) +
+                                  " bytes; image '" + img_name + "' (" + f->name + ") needs " + std::to_string(need));
+    VkBufferImageCopy r{.bufferOffset = 0,
+                        .bufferRowLength = 0,  // tightly packed
+                        .bufferImageHeight = 0,
+                        .imageSubresource = {p->image.aspect(), 0, 0, info.layers},
+                        .imageOffset = {0, 0, 0},
+                        .imageExtent = info.extent};
+    if (to_image)
+        vkCmdCopyBufferToImage(cb, b->buffer.buffer, p->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &r);
+    else
+        vkCmdCopyImageToBuffer(cb, p->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, b->buffer.buffer, 1, &r);
+    return ok_status();
+}
+
 Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
     CompiledGraph& g = *graph_;
     const CompiledPass& cp = g.passes[pass_index];
@@ -95,16 +121,14 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
                   pd.depth->write || pd.stencil.enable ? Access::depth_attachment : Access::depth_read, 0, full_clear);
     }
     bool src_is_buffer = !pd.src.empty() && res_.buffers.count(pd.src);
+    bool dst_is_buffer = !pd.dst.empty() && res_.buffers.count(pd.dst);
     switch (pd.kind) {
     case graph::PassKind::blit:
     case graph::PassKind::copy:
-        if (src_is_buffer) {
-            use_buffer(phys_buffer(pd.src, false), Access::transfer_src, 0);
-            use_buffer(phys_buffer(pd.dst, false), Access::transfer_dst, 0);
-        } else {
-            use_image(phys_image(pd.src, false), Access::transfer_src, 0, false);
-            use_image(phys_image(pd.dst, false), Access::transfer_dst, 0, true);
-        }
+        if (src_is_buffer) use_buffer(phys_buffer(pd.src, false), Access::transfer_src, 0);
+        else use_image(phys_image(pd.src, false), Access::transfer_src, 0, false);
+        if (dst_is_buffer) use_buffer(phys_buffer(pd.dst, false), Access::transfer_dst, 0);
+        else use_image(phys_image(pd.dst, false), Access::transfer_dst, 0, true);
         break;
     case graph::PassKind::clear:
         if (res_.buffers.count(pd.image)) use_buffer(phys_buffer(pd.image, false), Access::transfer_dst, 0);
@@ -149,13 +173,17 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
         return ok_status();
     }
     if (pd.kind == graph::PassKind::blit || pd.kind == graph::PassKind::copy) {
-        if (src_is_buffer) {
+        if (src_is_buffer && dst_is_buffer) {
             PhysBuffer* s = phys_buffer(pd.src, false);
             PhysBuffer* d = phys_buffer(pd.dst, false);
             VkBufferCopy c{0, 0, std::min(s->buffer.size, d->buffer.size)};
             vkCmdCopyBuffer(cb, s->buffer.buffer, d->buffer.buffer, 1, &c);
             return ok_status();
         }
+        if (src_is_buffer || dst_is_buffer)
+            return record_buffer_image_copy(cb, pd, phys_buffer(src_is_buffer ? pd.src : pd.dst, false),
+                                            phys_image(src_is_buffer ? pd.dst : pd.src, false),
+                                            image(src_is_buffer ? pd.dst : pd.src).format, src_is_buffer);
         PhysImage* s = phys_image(pd.src, false);
         PhysImage* d = phys_image(pd.dst, false);
         const auto& si = s->image.info();
@@ -447,6 +475,12 @@ Result<image::Image> Executor::read(const std::string& name, int mip, int layer)
         Error e = make_error("image '" + name + "' has " + std::to_string(info.mips) + " mip(s) and " +
                              std::to_string(nlayers) + " layer(s); mip " + std::to_string(mip) + " layer " +
                              std::to_string(layer) + " does not exist");
+        e.resource = name;
+        return e;
+    }
+    if (gi.format->compressed()) {
+        Error e = make_error("image '" + name + "' is block-compressed (" + gi.format->name +
+                             ") and cannot be read back; sample it into a colour image and read that");
         e.resource = name;
         return e;
     }

@@ -177,6 +177,15 @@ Status check_images(const GraphDesc& g, const DeclaredNames& n) {
         if (i.samples > 1 && (!i.file.empty() || !i.generator.empty())) return err("a file or generator image cannot be multisampled", "samples");
         if (i.kind == ImageKind::tex3d && i.samples > 1) return err("a 3D image cannot be multisampled", "samples");
         if (i.layers < 1) return err("layers must be at least 1", "layers");
+        if (ef && ef->compressed()) {
+            // Filled only by a copy from a buffer of blocks (see passes' copy); one mip, no MSAA.
+            if (!i.file.empty() || !i.generator.empty()) return err("a file or generator image cannot have a block-compressed format (fill it by a copy from a buffer)", "format");
+            if (i.kind == ImageKind::tex3d) return err("a 3D image cannot have a block-compressed format", "format");
+            if (i.samples > 1) return err("a block-compressed image cannot be multisampled", "samples");
+            if (i.mips != 1) return err("a block-compressed image has one mip here (the copy fills mip 0)", "mips");
+            if (i.history) return err("a block-compressed image cannot be a history image", "history");
+            if (i.clear) return err("a block-compressed image cannot be cleared", "clear");
+        }
         if (ef && ef->is_depth) {
             if (i.kind == ImageKind::tex3d) return err("a 3D image cannot have a depth format", "format");
             if (!i.file.empty() || !i.generator.empty()) return err("a file or generator image cannot have a depth format", "format");

@@ -179,6 +179,10 @@ struct PassChecker {
             if (f && f->is_depth)
                 return err("'" + t.image + "' has a depth format (" + effective_format(g, *d) + "); attach it with depth = \"" + t.image + "\"",
                            t.loc, t.image);
+            if (f && f->compressed())
+                return err("'" + t.image + "' is block-compressed (" + effective_format(g, *d) +
+                               "): sampled only; fill it with a copy pass from a buffer of blocks",
+                           t.loc, t.image);
             if (!base(d)->file.empty() || !base(d)->generator.empty())
                 return err("'" + t.image + "' comes from a " + std::string(base(d)->file.empty() ? "generator" : "file") +
                                "; render into an image of its own",
@@ -234,27 +238,48 @@ struct PassChecker {
         case PassKind::blit:
             if (auto s = need_image(p.src, at("src"), "src image"); !s) return s;
             if (auto s = need_image(p.dst, at("dst"), "dst image"); !s) return s;
+            for (const std::string* n : {&p.src, &p.dst})
+                if (const vk::FormatInfo* f = format(g.find_image(*n)); f && f->compressed())
+                    return err("'" + *n + "' is block-compressed; blit cannot read or write it (sample it in a pass)",
+                               at(n == &p.src ? "src" : "dst"), *n);
             break;
         case PassKind::copy: {
+            // image -> image, buffer -> buffer, and buffer <-> image (texels, or the blocks of a
+            // block-compressed image, tightly packed row by row).
             bool src_buffer = g.find_buffer(p.src), dst_buffer = g.find_buffer(p.dst);
             if (!src_buffer)
-                if (auto s = need_image(p.src, at("src"), "src image"); !s) return s;
-            if (!dst_buffer) {
-                if (src_buffer) return need_buffer(p.dst, at("dst"), "dst buffer");
-                if (auto s = need_image(p.dst, at("dst"), "dst image"); !s) return s;
+                if (auto s = need_image(p.src, at("src"), "src image or buffer"); !s) return s;
+            if (!dst_buffer)
+                if (auto s = need_image(p.dst, at("dst"), "dst image or buffer"); !s) return s;
+            if (!src_buffer && !dst_buffer) {
+                const vk::FormatInfo* fs = format(g.find_image(p.src));
+                const vk::FormatInfo* fd = format(g.find_image(p.dst));
+                if ((fs && fs->compressed()) || (fd && fd->compressed()))
+                    return err("a block-compressed image is filled from a buffer of blocks: copy from a buffer", at("dst"));
             }
-            if (src_buffer != dst_buffer) return err("copy goes image to image or buffer to buffer", at("dst"));
+            for (const std::string* n : {&p.src, &p.dst}) {
+                const ImageDesc* d = g.find_image(*n);
+                if (!d || (!src_buffer && !dst_buffer)) continue;
+                if (base(d)->samples > 1) return err("a multisampled image cannot be copied to or from a buffer", at(n == &p.src ? "src" : "dst"), *n);
+                const vk::FormatInfo* f = format(d);
+                if (f && f->is_depth) return err("a depth image cannot be copied to or from a buffer here", at(n == &p.src ? "src" : "dst"), *n);
+            }
             break;
         }
         case PassKind::mips: {
             if (auto s = need_image(p.image, at("image")); !s) return s;
             const ImageDesc* b = base(g.find_image(p.image));
             if (b->mips == 1) return err("image '" + p.image + "' has one mip; declare it with mips = \"full\" or mips = N", at("image"), p.image);
+            if (const vk::FormatInfo* f = format(b); f && f->compressed())
+                return err("image '" + p.image + "' is block-compressed; mips cannot be generated for it", at("image"), p.image);
             break;
         }
         case PassKind::clear:
-            if (!g.find_buffer(p.image))
+            if (!g.find_buffer(p.image)) {
                 if (auto s = need_image(p.image, at("image"), "image or buffer"); !s) return s;
+                if (const vk::FormatInfo* f = format(g.find_image(p.image)); f && f->compressed())
+                    return err("image '" + p.image + "' is block-compressed and cannot be cleared", at("image"), p.image);
+            }
             break;
         default: break;
         }

@@ -57,14 +57,14 @@ Status image_size(const GraphDesc& g, const ImageDesc& i, const SizeEnv& env, co
                    size.loc);
     if (i.kind == ImageKind::cube && ext->w != ext->h) return err("a cube image must be square, not " + text, size.loc);
     const vk::FormatInfo* f = vk::find_format(effective_format(g, i));
-    double texel = f ? f->bytes_per_texel : 16;
+    double texel = f ? double(f->bytes_per_texel) / (f->block * f->block) : 16;
     double layers = i.kind == ImageKind::cube ? 6 : i.kind == ImageKind::tex2d_array ? std::max(1, i.layers) : 1;
     // A full mip chain adds a third in 2D (1/4 + 1/16 + ...) and a seventh in 3D.
     double chain = i.mips == 1 ? 1.0 : dims == 3 ? 8.0 / 7.0 : 4.0 / 3.0;
     double bytes = double(ext->w) * double(ext->h) * double(ext->d) * layers * texel * i.samples * (i.history ? 2 : 1) * chain;
     if (bytes > double(kMaxImageBytes)) {
         Error e = err("would need " + human_bytes(bytes) + " (limit " + human_bytes(double(kMaxImageBytes)) + ")", size.loc);
-        e.notes.insert(e.notes.begin(), text + " x " + std::to_string(int(texel)) + " bytes per texel" +
+        e.notes.insert(e.notes.begin(), text + " x " + (texel == double(int(texel)) ? std::to_string(int(texel)) : std::to_string(texel).substr(0, 3)) + " bytes per texel" +
                                             (layers > 1 ? " x " + std::to_string(int(layers)) + " layers" : "") +
                                             (i.samples > 1 ? " x " + std::to_string(i.samples) + " samples" : "") +
                                             (i.history ? " x 2 (history)" : "") + (chain > 1 ? " + mips" : ""));

@@ -82,6 +82,7 @@ std::vector<std::string> DeviceFeatures::names() const {
     add(shader_output_layer, "shader_output_layer");
     add(shader_clip_distance, "shader_clip_distance");
     add(shader_cull_distance, "shader_cull_distance");
+    add(texture_compression_bc, "texture_compression_bc");
     return out;
 }
 
@@ -276,6 +277,7 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& opt) {
     use.largePoints = have.largePoints;
     use.shaderClipDistance = have.shaderClipDistance;
     use.shaderCullDistance = have.shaderCullDistance;
+    use.textureCompressionBC = have.textureCompressionBC;
     f2.features = use;
     VkPhysicalDeviceVulkan13Features e13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     e13.dynamicRendering = VK_TRUE;
@@ -329,6 +331,7 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& opt) {
     F.shader_output_layer = f12.shaderOutputLayer;
     F.shader_clip_distance = use.shaderClipDistance;
     F.shader_cull_distance = use.shaderCullDistance;
+    F.texture_compression_bc = use.textureCompressionBC;
     F.max_anisotropy = use.samplerAnisotropy ? ctx->props_.limits.maxSamplerAnisotropy : 1.0f;
 
     float priority = 1.0f;

@@ -40,6 +40,7 @@ struct DeviceFeatures {
     bool shader_output_layer = false;       // gl_Layer from vertex stage (Vulkan 1.2)
     bool shader_clip_distance = false;      // gl_ClipDistance (user clip planes: mirrors, portals)
     bool shader_cull_distance = false;      // gl_CullDistance
+    bool texture_compression_bc = false;    // BC1..BC7 sampled images (desktop GPUs, lavapipe)
     float max_anisotropy = 1.0f;
     std::vector<std::string> names() const;  // the true ones, as used in `requires`
     bool has(const std::string& name) const;

@@ -31,6 +31,9 @@ const FormatInfo kFormats[] = {
     {"d32",          VK_FORMAT_D32_SFLOAT,               1, 4, true,  false, true,  false, false, ""},
     {"d24s8",        VK_FORMAT_D24_UNORM_S8_UINT,        2, 4, true,  true,  true,  false, false, ""},
     {"d32s8",        VK_FORMAT_D32_SFLOAT_S8_UINT,       2, 8, true,  true,  true,  false, false, ""},
+    // Block-compressed (S3TC/DXT1): sampled only, filled by a `copy` pass from a buffer of blocks.
+    {"bc1_rgba",      VK_FORMAT_BC1_RGBA_UNORM_BLOCK,    4, 8, false, false, true,  false, false, "", 4},
+    {"bc1_rgba_srgb", VK_FORMAT_BC1_RGBA_SRGB_BLOCK,     4, 8, false, false, true,  false, true,  "", 4},
 };
 // clang-format on
 } // namespace

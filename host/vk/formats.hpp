@@ -12,12 +12,14 @@ struct FormatInfo {
     const char* name;       // as written in preset.toml
     VkFormat format;
     int components;         // 1..4
-    int bytes_per_texel;
+    int bytes_per_texel;    // for block-compressed formats: bytes per block
     bool is_depth, has_stencil;
     bool is_float;          // float or unorm/snorm (sampled as float)
     bool is_integer;        // uint/sint (isampler/usampler, integer atomics)
     bool is_srgb;
     const char* glsl_storage;  // GLSL image format qualifier ("" if not usable as storage)
+    int block = 1;          // block side in texels: 1, or 4 for BC1 (4x4 texels in 8 bytes)
+    bool compressed() const { return block > 1; }
 };
 
 // nullptr if unknown.
