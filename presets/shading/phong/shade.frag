@@ -15,17 +15,12 @@
 // specular is multiplied by step(0, n.l) - stated, not silent. Phong's specular also lacks
 // the cos(theta_i) factor its diffuse has (L914): that is why the peak is c_d cos + c_s.
 #include "common/brdf.glsl"
+#include "shading/eye_dir.glsl"
 
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;
 layout(location = 2) flat in int v_model;
 layout(location = 0) out vec4 hdr;
-
-// Direction towards the eye: parallel rays for an orthographic camera (proj[3][3] = 1).
-vec3 eye_dir(vec3 p) {
-    return normalize(frame.proj[3][3] == 1.0 ? (frame.inv_view * vec4(0.0, 0.0, 1.0, 0.0)).xyz
-                                             : frame.camera_pos.xyz - p);
-}
 
 void main() {
     vec3 n = normalize(v_normal);               // renormalise the interpolated normal
