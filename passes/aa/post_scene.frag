@@ -3,10 +3,14 @@
 // coverage-weighted reference (`reference`). SCENE: the scene (an int expression, e.g.
 // params.scene); LINE: the staircase's (slope, offset) in pixels (a vec2 expression);
 // SUPERSAMPLE: a bool expression, whether the shapes and checker get their 8 x 8 reference
-// (slow: only when a view or test needs it).
+// (slow: only when a view or test needs it). JITTER_PX (vec2 expression, pixels, default 0)
+// moves the one sample per pixel (temporal methods); the reference stays unjittered.
 #include "aa/post_scene.glsl"
 #ifndef LINE
 #define LINE vec2(0.25, 0.37)
+#endif
+#ifndef JITTER_PX
+#define JITTER_PX vec2(0.0)
 #endif
 #ifndef SUPERSAMPLE
 #define SUPERSAMPLE true
@@ -15,6 +19,6 @@ layout(location = 0) out vec4 color;
 layout(location = 1) out vec4 reference;
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
-    color = vec4(aa_scene_color(SCENE, px, LINE, frame.resolution.xy), 1.0);
+    color = vec4(aa_scene_sample(SCENE, vec2(px) + 0.5 + (JITTER_PX), LINE, frame.resolution.xy), 1.0);
     reference = vec4(aa_scene_reference(SCENE, px, LINE, frame.resolution.xy, SUPERSAMPLE), 1.0);
 }

@@ -1,0 +1,19 @@
+#version 450
+// The chosen mode's output (002_644d46bdce7e5305.txt L1848-1857: none, FXAA, SMAA1x, SMAA T2x).
+// SMAA T2x = SMAA1x on a frame jittered by (+0.25, -0.25) or (-0.25, +0.25) px, alternating,
+// blended 50/50 with the previous frame's SMAA1x result ("alternative frame jitter and temporal
+// alternative frame blending", L1854-1855): two sub-pixel positions per pixel over two frames.
+// The scene here is static: the previous result needs no reprojection (SMAA's velocity
+// weighting is left out and said so). Frame 0 has no previous result: the current alone.
+layout(location = 0) out vec4 result;
+uniform sampler2D color;
+uniform sampler2D fxaa;
+uniform sampler2D smaa;
+uniform sampler2D smaa_prev;
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    if (params.mode == MODE_NONE) result = texelFetch(color, p, 0);
+    else if (params.mode == MODE_FXAA) result = texelFetch(fxaa, p, 0);
+    else if (params.mode == MODE_SMAA1X || frame.index == 0) result = texelFetch(smaa, p, 0);
+    else result = 0.5 * (texelFetch(smaa, p, 0) + texelFetch(smaa_prev, p, 0));
+}
