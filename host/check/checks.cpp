@@ -8,6 +8,7 @@
 #include "check/properties.hpp"
 #include "image/image.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -138,7 +139,8 @@ std::optional<CheckResult> render_property(vk::Context& ctx, const fs::path& tom
                 for (int ch : chans) sum += (*o)->pixels[i * 4 + static_cast<size_t>(ch)];
             means.push_back(sum / double(n * chans.size()));
         }
-        r.passed = true;
+        // A NaN or Inf mean compares false both ways, so it would pass any direction: fail it.
+        r.passed = std::all_of(means.begin(), means.end(), [](double m) { return std::isfinite(m); });
         for (size_t i = 1; i < means.size(); ++i) {
             double step = means[i] - means[i - 1];
             if (dir == "decreasing" ? step > tol : step < -tol) r.passed = false;

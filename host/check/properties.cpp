@@ -133,7 +133,10 @@ std::optional<CheckResult> image_property(const image::Image& img, const graph::
             for (int x = 0; x < img.width; ++x) {
                 const float* a = img.at(x, y);
                 const float* b = axis == "y" ? img.at(x, img.height - 1 - y) : img.at(img.width - 1 - x, y);
-                for (int ch : chans) worst = std::max(worst, double(std::fabs(a[ch] - b[ch])));
+                for (int ch : chans) {
+                    double d = std::fabs(double(a[ch]) - double(b[ch]));
+                    worst = std::isfinite(d) ? std::max(worst, d) : INFINITY;  // NaN never passes
+                }
             }
         r.what = "symmetry " + axis;
         r.passed = worst <= tol;

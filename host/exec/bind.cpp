@@ -189,7 +189,16 @@ Status bind_pass(const graph::GraphDesc& desc, CompiledPass& cp) {
         if (!t.resolve.empty()) writes.push_back(underlying(desc, t.resolve));
     }
     if (pd.depth) {
-        if (pd.depth->write) writes.push_back(underlying(desc, pd.depth->target.image));
+        // The attachment is written by depth writes, by stencil ops that change the stencil
+        // (a mirror or shadow-volume mark pass tests depth read-only but writes stencil) and
+        // by a clear; otherwise the pass only reads it.
+        auto changes = [](const graph::StencilFaceDesc& f) {
+            return f.fail != "keep" || f.pass != "keep" || f.depth_fail != "keep";
+        };
+        bool stencil_writes = pd.stencil.enable && pd.stencil.write_mask != 0 &&
+                              (changes(pd.stencil.front) || changes(pd.stencil.back));
+        bool clears = pd.clear.depth.has_value() || pd.clear.stencil.has_value();
+        if (pd.depth->write || stencil_writes || clears) writes.push_back(underlying(desc, pd.depth->target.image));
         else reads.push_back(underlying(desc, pd.depth->target.image));
     }
     if (!pd.src.empty()) reads.push_back(underlying(desc, pd.src));
