@@ -1,0 +1,66 @@
+#version 450
+// Displacement mapping with prisms (004_9a40ad89bdfc582a.txt L1048-1053: "geometry shader
+// extrudes prism at each face; fragment shader ray-casts against height field; shade or discard
+// pixel depending on ray test"). For each triangle the geometry shader emits the prism between
+// the triangle and its copy lifted by params.height along the face normal N_f: the top and
+// three side quads (the bottom is the surface itself: a ray from outside cannot enter there).
+// Inside the prism, texture space (u, v, w) -- w = 0 on the triangle, 1 on the top -- is an
+// affine image of world space:
+//     P(u, v, w) = p0 + P_u (u - u0) + P_v (v - v0) + N_f height w
+// with [P_u P_v] = [v1 v2][u1 u2]^-1, the triangle's own frame (001_fe43b953f362fae7.txt
+// L819-855, passes/bump/triangle_frame.glsl). Each vertex carries its (u, v, w); the matrix
+// M = [P_u P_v N_f height], p0 and the corners go flat to the fragment shader, which marches the
+// eye ray in (u, v, w). Lifting along N_f (not the vertex normals) keeps every prism exactly
+// affine; on a curved mesh neighbouring prisms then leave wedge gaps above convex edges and
+// overlap above concave ones (stated in the README).
+#include "bump/triangle_frame.glsl"
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 15) out;
+layout(location = 0) in vec3 v_world[];
+layout(location = 1) in vec2 v_uv[];
+layout(location = 2) in vec3 v_t[];
+layout(location = 3) in vec3 v_b[];
+layout(location = 4) in vec3 v_n[];
+layout(location = 0) out vec3 g_world;
+layout(location = 1) out vec3 g_uvw;
+layout(location = 2) flat out mat3 g_m;       // locations 2-4
+layout(location = 5) flat out vec3 g_p0;
+layout(location = 6) flat out vec4 g_uv01;
+layout(location = 7) flat out vec2 g_uv2;
+layout(location = 8) flat out vec3 g_n0;
+layout(location = 9) flat out vec3 g_n1;
+layout(location = 10) flat out vec3 g_n2;
+
+mat3 m;
+vec3 p0;
+vec4 uv01;
+vec2 uv2;
+vec3 n0, n1, n2;
+
+void emit(int i, float w) {
+    vec3 lift = m[2] * w;   // N_f * height * w
+    g_world = v_world[i] + lift;
+    g_uvw = vec3(v_uv[i], w);
+    g_m = m, g_p0 = p0, g_uv01 = uv01, g_uv2 = uv2, g_n0 = n0, g_n1 = n1, g_n2 = n2;
+    gl_Position = frame.view_proj * vec4(g_world, 1.0);
+    EmitVertex();
+}
+
+void main() {
+    if (!(ACTIVE)) return;   // one pass per height field; only the selected one emits
+    mat2x3 d = triangle_pu_pv(v_world[0], v_world[1], v_world[2], v_uv[0], v_uv[1], v_uv[2]);
+    if (dot(d[0], d[0]) == 0.0) return;   // degenerate: no surface, no prism
+    vec3 N_f = normalize(cross(v_world[1] - v_world[0], v_world[2] - v_world[0]));
+    m = mat3(d[0], d[1], N_f * max(params.height, 1e-5));   // height 0 would make M singular
+    p0 = v_world[0], uv01 = vec4(v_uv[0], v_uv[1]), uv2 = v_uv[2];
+    n0 = v_n[0], n1 = v_n[1], n2 = v_n[2];
+    // Top, counter-clockwise seen from outside like the triangle.
+    emit(0, 1.0); emit(1, 1.0); emit(2, 1.0);
+    EndPrimitive();
+    // Sides: edge i -> j of the counter-clockwise triangle, quad (p_i, p_j, p_j', p_i') faces out.
+    for (int e = 0; e < 3; ++e) {
+        int i = e, j = (e + 1) % 3;
+        emit(i, 0.0); emit(j, 0.0); emit(i, 1.0); emit(j, 1.0);
+        EndPrimitive();
+    }
+}
