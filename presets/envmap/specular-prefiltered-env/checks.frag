@@ -1,6 +1,6 @@
 #version 450
-// Checks of the prefiltered map against the source it was filtered from, over all 6 x 32^2
-// texels (both maps 32^2: texel centres coincide, so each lookup is one texel):
+// Checks of the prefiltered map against the source it was filtered from, over all 6 x size^2
+// texels (both maps are source_size^2: texel centres coincide, so each lookup is one texel):
 //   texel 0: max |P - 1|       (with a constant environment of 1 it must stay 1)
 //   texel 1: max |P - source|  (with n = 1e4 the lobe is narrower than a texel: P = source)
 //   texel 2: max |P - (0.5 + 0.35 (n+1)/(n+2) R)|  for the smooth field L(w) = 0.5 + 0.35 w:
