@@ -1,0 +1,65 @@
+// Parametrisations: texture coordinates computed from the object-space point
+// (000_c9f7e5de708ecbb3.txt L1528-1591).
+//   planar:      (u, v) = (x, y) over the bounding box: "dump one of the coordinates" (L1538) —
+//                "only looks good from the front" (L1542): along z it smears.
+//   cylindrical: u = atan(z, x) / 2pi + 1/2,  v = (y - y_min) / height         (L1546-1556)
+//   spherical:   u = atan(z, x) / 2pi + 1/2,  v = acos(y / |p|) / pi           (L1556-1560)
+//   box:         project onto the plane of the normal's dominant axis (L1562-1565: "used
+//                mainly for environment mapping")
+// All have distortions and singularities (L1569-1572): the poles of the sphere, the caps of
+// the cylinder, the box's edges.
+//
+// Pitfall (TECHNIQUES.md), fixed and stated: atan jumps from +pi to -pi behind the object,
+// so u jumps from 1 to 0 between two pixels of a 2x2 quad; the implicit derivative there is
+// ~1 texture width per pixel and the sampler picks the smallest mip: a line of the texture's
+// mean colour along the seam. Fix: textureGrad with the analytic derivative of the angle,
+//     d atan(z, x) = (x dz - z dx) / (x^2 + z^2),
+// which knows nothing of the branch cut. (Box mapping has the same problem at face
+// changes: all three projections are differentiated in uniform flow, then one is picked.)
+#ifndef PARAMETRIZATION_MAPPING_GLSL
+#define PARAMETRIZATION_MAPPING_GLSL
+const float kTwoPi = 6.28318530718, kPi = 3.14159265359;
+
+struct Param {
+    vec2 uv, dx, dy;     // coordinates and their screen derivatives (seam-free)
+    float u_jump;        // |implicit derivative| of the raw angle coordinate: > 0.25 at the seam
+};
+
+// p: object-space point relative to the bounding box centre, e: box half-extent, n: normal,
+// dpx / dpy: dFdx(p) / dFdy(p) taken in uniform control flow.
+Param parametrize(int mapping, vec3 p, vec3 e, vec3 n, vec3 dpx, vec3 dpy) {
+    Param r;
+    float angle_u = atan(p.z, p.x) / kTwoPi + 0.5;
+    r.u_jump = max(abs(dFdx(angle_u)), abs(dFdy(angle_u)));
+    float rxz2 = max(p.x * p.x + p.z * p.z, 1e-12);
+    vec2 du = vec2(p.x * dpx.z - p.z * dpx.x, p.x * dpy.z - p.z * dpy.x) / (kTwoPi * rxz2);
+    // Box: three planar projections, each mapped to [0, 1]^2 over the box's faces.
+    vec2 px = vec2(-p.z, p.y) / (2.0 * e.zy) + 0.5, py = vec2(p.x, -p.z) / (2.0 * e.xz) + 0.5,
+         pz = vec2(p.x, p.y) / (2.0 * e.xy) + 0.5;
+    vec2 px_dx = dFdx(px), px_dy = dFdy(px), py_dx = dFdx(py), py_dy = dFdy(py), pz_dx = dFdx(pz), pz_dy = dFdy(pz);
+    float v_sphere = acos(clamp(p.y / max(length(p), 1e-12), -1.0, 1.0)) / kPi;
+    vec2 dv_sphere = vec2(dFdx(v_sphere), dFdy(v_sphere));   // no seam in v
+    if (mapping == MAPPING_PLANAR) {
+        r.uv = pz; r.dx = pz_dx; r.dy = pz_dy;
+        r.u_jump = 0.0;
+    } else if (mapping == MAPPING_CYLINDRICAL) {
+        r.uv = vec2(angle_u, (p.y + e.y) / (2.0 * e.y));
+        r.dx = vec2(du.x, dpx.y / (2.0 * e.y));
+        r.dy = vec2(du.y, dpy.y / (2.0 * e.y));
+    } else if (mapping == MAPPING_SPHERICAL) {
+        r.uv = vec2(angle_u, v_sphere);
+        r.dx = vec2(du.x, dv_sphere.x);
+        r.dy = vec2(du.y, dv_sphere.y);
+    } else {
+        vec3 a = abs(n);
+        if (a.x >= a.y && a.x >= a.z) { r.uv = px; r.dx = px_dx; r.dy = px_dy; }
+        else if (a.y >= a.z) { r.uv = py; r.dx = py_dx; r.dy = py_dy; }
+        else { r.uv = pz; r.dx = pz_dx; r.dy = pz_dy; }
+        r.u_jump = 0.0;
+    }
+    r.uv.y = 1.0 - r.uv.y;   // texture row 0 at the top
+    r.dx.y = -r.dx.y;
+    r.dy.y = -r.dy.y;
+    return r;
+}
+#endif
