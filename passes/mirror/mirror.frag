@@ -32,18 +32,18 @@ void main() {
     vec4 c = mirror_camera_view_proj() * vec4(v_world, 1.0);
     vec2 st = c.xy / c.w * 0.5 + 0.5;
 #ifdef RTT_DISTORT
-    st += RTT_DISTORT;  // an expression: offsets for fuzzy / rippled reflections (000 L3911-3914)
+    st += RTT_DISTORT;  // an expression: offsets for fuzzy / rippled reflections (000 L3928)
 #endif
     vec4 texel = texture(RTT, st);
     vec3 refl = texel.rgb;
     float refl_height = texel.a;  // what the RTT pass stored in alpha (the reflected point's height)
 #ifdef RTT_FADE
-    refl = mix(refl, tint, RTT_FADE);  // an expression in [0, 1] of refl_height: fade (000 L3912)
+    refl = mix(refl, tint, RTT_FADE);  // an expression in [0, 1] of refl_height: fade (000 L3927)
 #endif
     hdr = vec4(mix(tint, refl, params.reflectivity), 1.0);
 #elif defined(GBUFFER)
     // The lit image shows the mirror's own colour; the reflection map says how much of the
-    // reflection a later pass mixes in: c = mix(lit, reflection, map) (000 L3995-4000).
+    // reflection a later pass mixes in: c = mix(lit, reflection, map) (000 L3990-3993).
     hdr = vec4(tint, 1.0);
     GBUFFER = vec4(normalize(v_normal), params.reflectivity);
 #else

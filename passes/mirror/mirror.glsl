@@ -21,7 +21,7 @@ mat4 mirror_matrix() {
 vec3 mirror_point(vec3 p) { return p - 2.0 * (dot(p, kMirrorNormal) - kMirrorOffset) * kMirrorNormal; }
 vec3 mirror_direction(vec3 v) { return v - 2.0 * dot(v, kMirrorNormal) * kMirrorNormal; }
 // Signed distance to the plane: > 0 on the side the mirror faces. Written to gl_ClipDistance[0]
-// for reflected geometry, it cuts away what lies behind the mirror (000 L3916-3921: "if scene
+// for reflected geometry, it cuts away what lies behind the mirror (000 L3938-3939: "if scene
 // intersects mirror plane, need to clip against plane").
 float mirror_side(vec3 p) { return dot(p, kMirrorNormal) - kMirrorOffset; }
 

@@ -1,7 +1,7 @@
 #version 450
 // One object of the mirror scene (scene.glsl), drawn either as itself or reflected.
 //   OBJECT     index into object_model (0 teapot, 1 ball, 2 box)
-//   MIRRORED   1: the reflected object M p for the stencil method (000 L3870-3875:
+//   MIRRORED   1: the reflected object M p for the stencil method (000 L3869-3870:
 //              "Scale(1, 1, -1)" and "adapt culling to mirroring"; the pass sets
 //              front_face = "cw" because det M = -1 turns counter-clockwise triangles clockwise)
 //   VIEW_PROJ  the camera (default: the view's; the render-to-texture pass gives the mirrored one)

@@ -1,7 +1,7 @@
 #version 450
-// c = mix(lit, reflection, map): the reflection map decides per pixel (000 L3995-4000). Where
-// the ray missed, the environment in direction R stands in (000 L4120-4124: "blend with cube
-// maps"), or nothing (fallback off). Where the map is 0 the lit image passes untouched.
+// c = mix(lit, reflection, map): the reflection map decides per pixel (000 L3990-3993). Where
+// the ray missed, the environment in direction R stands in (000 L4124: "blend with
+// cubemaps"), or nothing (fallback off). Where the map is 0 the lit image passes untouched.
 // show: the composite, the reflection alone, or hits (green) / fallbacks (red) on the mirror.
 #include "mirror/scene.glsl"
 layout(location = 0) in vec2 uv;

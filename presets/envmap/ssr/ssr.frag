@@ -1,15 +1,15 @@
 #version 450
 // Screen-space reflections (000_c9f7e5de708ecbb3.txt L3968-4130, after Killing Floor 2 as the
 // lecture cites it). For every pixel with a non-zero reflection map:
-//   1. P from the depth buffer, V = normalize(P - eye), R = reflect(V, N)         (L4007-4012)
+//   1. P from the depth buffer, V = normalize(P - eye), R = reflect(V, N)         (L3999)
 //   2. project P and a point P + L R: the screen-space ray (u, v, z_device) and its direction
-//      ScreenSpaceReflectionVec = normalize(ss(P + L R) - ss(P))                  (L4014-4020)
+//      ScreenSpaceReflectionVec = normalize(ss(P + L R) - ss(P))                  (L4000-4003)
 //      (z_device is affine along the projected line, so marching it linearly is exact)
 //   3. ray march: sample_i = ScreenSpacePos + (i step) ScreenSpaceReflectionVec, i < 16, until
-//      sample.z > depth buffer (the ray went behind what the camera sees)         (L4030-4061)
-//   4. binary search, 6 halvings between the sample before and the one after    (L4066-4090)
+//      sample.z > depth buffer (the ray went behind what the camera sees)         (L4013-4052)
+//   4. binary search, 6 halvings between the sample before and the one after    (L4056-4084)
 //   5. the reflected colour is the lit image at the intersection's (u, v).
-// BUG IN THE PRINTED CODE (L4040-4052, TECHNIQUES pitfall): it #defines
+// BUG IN THE PRINTED CODE (L4028-4041, TECHNIQUES pitfall): it #defines
 // MAX_REFLECTION_RAY_MARCH_STEP 0.02 but the loop multiplies by ReflectionRayMarchStep, which
 // is declared nowhere: it does not compile. Fixed here: one name, kept as a param
 // (params.march_step, default the printed 0.02).
@@ -18,8 +18,8 @@
 // object "hit" its front. Here, after the binary search, the ray counts as hitting only when it
 // ends at most params.thickness (view-space units) behind the depth buffer; otherwise it marches
 // on. thickness = 0 is the printed test.
-// Misses (off screen, no intersection within the steps: L4092-4118) leave alpha 0: the
-// composite falls back to the environment (L4120-4124, "blend with cube maps").
+// Misses (off screen, no intersection within the steps: L4086-4120) leave alpha 0: the
+// composite falls back to the environment (L4124, "blend with cubemaps").
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 ssr;   // rgb: reflected colour, a: 1 hit, 0 miss
 uniform sampler2D lit;
@@ -66,7 +66,7 @@ bool GetReflection(vec3 ScreenSpaceReflectionVec, vec3 ScreenSpacePos, out vec3 
     vec3 PrevRaySample = ScreenSpacePos;
     for (int RayStepIdx = 0; RayStepIdx < params.march_steps; RayStepIdx++) {
         vec3 RaySample = (float(RayStepIdx) * params.march_step) * ScreenSpaceReflectionVec + ScreenSpacePos;
-        if (!on_screen(RaySample)) return false;  // "reflections outside viewport" (L4094)
+        if (!on_screen(RaySample)) return false;  // "reflections outside viewport" (L4089)
         float ZBufferVal = depth_at(RaySample.xy);
         if (RaySample.z > ZBufferVal) {
             vec3 MinRaySample = PrevRaySample, MaxRaySample = RaySample, MidRaySample = RaySample;
@@ -97,7 +97,7 @@ bool GetReflection(vec3 ScreenSpaceReflectionVec, vec3 ScreenSpacePos, out vec3 
 void main() {
     ssr = vec4(0.0);
     vec4 g = texture(gbuf, uv);
-    if (g.w <= 0.0) return;  // "black pixels do not show SSR" (L3997)
+    if (g.w <= 0.0) return;  // "black pixels do not show SSR" (L3992)
     float z = depth_at(uv);
     vec4 w = frame.inv_view_proj * vec4(uv * 2.0 - 1.0, z, 1.0);
     vec3 P = w.xyz / w.w, N = normalize(g.xyz);

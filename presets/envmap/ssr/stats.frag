@@ -6,7 +6,7 @@
 //      right answer is a miss and a hit is false, e.g. behind an object); and the pixel is not on
 //      an edge of the true reflection
 //   g: r and a match: every displayed 8-bit channel within 4/255 (TECHNIQUES 3.5)
-//   b: any hit on the mirror (SSR's limitations included: 000 L4092-4118)
+//   b: any hit on the mirror (SSR's limitations included: 000 L4086-4120)
 //   a: b and a match
 #include "common/color.glsl"
 layout(location = 0) out vec4 classes;  // per pixel, averaged by a mips pass
