@@ -3,19 +3,19 @@
 // (P1, front face) and again where it leaves (P2, back face), instead of leaving at once
 // (the one-surface approximation of envmap/refraction-env).
 //   1. T1 = refract(I, N1, 1/eta) at P1
-//   2. P2 = P1 + d T1 (L776), d found by binary search against the back-face depth map
-//      (L786-799): bracket A = P1, B = P1 + d_max T1 (camera space); M = (A + B)/2 projected
+//   2. P2 = P1 + d T1 (L780), d found by binary search against the back-face depth map
+//      (L788-795): bracket A = P1, B = P1 + d_max T1 (camera space); M = (A + B)/2 projected
 //      into the map gives d~; M still inside (in front of the back face) -> A = M, else B = M;
-//      ~5 iterations (L780: "ca. 5 iterations suffice"). d = |(A + B)/2 - P1| at the end.
-//   3. N2 from the back-face normal map at P2's pixel (L803-808), T2 = refract(T1, -N2, eta)
-//   4. the environment in direction T2 (L810-813); Fresnel at P1 mixes in the reflection R1.
-// SIGN CONVENTION (stated, not fixed silently): L795-797 read "if d~ > M_z set A = M" with
+//      ~5 iterations (L784: "ca. 5 iterations suffice"). d = |(A + B)/2 - P1| at the end.
+//   3. N2 from the back-face normal map at P2's pixel (L799-803), T2 = refract(T1, -N2, eta)
+//   4. the environment in direction T2 (L805-808); Fresnel at P1 mixes in the reflection R1.
+// SIGN CONVENTION (stated, not fixed silently): L793-794 read "if d~ > M_z set A = M" with
 // camera-space points and t_z < 0. With camera-space z (negative in front of the eye) that test
 // is backwards: a back face nearer than M (d~ > M_z, less negative) means M is already outside.
 // The printed rule holds for depths as positive distances, which is what back_depth stores
 // (-z_view): d~ > depth(M) -> M is in front of the back face, still inside -> A = M.
 // Total internal reflection at P2 (refract returns 0): the ray would bounce inside; the method
-// allows "2 intersection calculations per light ray" (figure, L838), so the internally reflected
+// allows "2 intersection calculations per light ray" (figure, L840-842), so the internally reflected
 // direction reflect(T1, -N2) goes to the environment directly.
 // Outside the object's silhouette the map holds 0 (no back face): M is treated as outside.
 #include "common/fresnel.glsl"
