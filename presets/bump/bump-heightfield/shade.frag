@@ -15,7 +15,7 @@ layout(location = 2) in vec3 v_n;
 layout(location = 3) in vec3 v_pu;
 layout(location = 4) in vec3 v_pv;
 layout(location = 0) out vec4 hdr;
-layout(location = 1) out vec4 normal_out;   // the world-space normal the lighting used (tests)
+layout(location = 1) out vec4 normal_out;   // xyz: the world-space normal the lighting used; w: the diffuse factor (tests)
 uniform sampler2D off_tiles;
 uniform sampler2D off_flat;
 uniform sampler2D off_ramp;
@@ -54,5 +54,5 @@ void main() {
     if (params.show == SHOW_NORMALS) c = n * 0.5 + 0.5;
     if (params.show == SHOW_HEIGHT) c = vec3(o.x);
     hdr = vec4(c, 1.0);
-    normal_out = vec4(n, 1.0);
+    normal_out = vec4(n, terms.x);
 }
