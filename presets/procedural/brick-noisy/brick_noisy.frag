@@ -1,12 +1,12 @@
 #version 450
 // Noisy brick, 004_9a40ad89bdfc582a.txt L445-487: the brick of L209-260 (shared steps in
 // passes/procedural/brick.glsl) made less "clean" (L262-266) by noise in two places:
-//   4) colour variation (low frequency, L452):
+//   4) colour variation (low frequency, L449):
 //        BrickColor * (1 + color_var * n(color_freq * P_model))
-//   5) curvy brick edges (L466-487), after fract():
+//   5) curvy brick edges (L453, L464-487), after fract():
 //        rel_pos += border_amp * noise2(border_freq * P_model)
 //        outside_brick = any(greaterThan(rel_pos, BrickPercent)) || any(lessThan(rel_pos, 0))
-// The second test is new: a shift can push rel_pos below 0, which is mortar too. noise2 is not
+// The second test (L482-483): a shift can push rel_pos below 0, which is mortar too. noise2 is not
 // a Vulkan GLSL built-in (L433-443); gradient_noise2 (passes/procedural/noise_ext.glsl) stands
 // in for it. With border_amp = 0 and color_var = 0 every value below is the plain brick's, bit
 // for bit: rel_pos + 0 * n = rel_pos, fract() >= 0, and BrickColor * (1 + 0 * n) = BrickColor.
