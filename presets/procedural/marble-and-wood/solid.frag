@@ -5,7 +5,8 @@
 //     g = a * perlin(x, y, z),   grain = g - int(g)
 // plus, optionally, the concentric rings of 000_c9f7e5de708ecbb3.txt L1746-1756 (bands of
 // x^2 + y^2: light brown, dark brown, ...): g = a * (perlin(p) + rings * |p.xz|), the tree's
-// axis along the model's y. The colour is mix(wood_light, wood_dark, grain).
+// axis along the model's y. Deviation, stated: 000 bands the squared radius (rings crowding
+// outwards); |p.xz| keeps the rings one width apart, like yearly growth. The colour is mix(wood_light, wood_dark, grain).
 // Pitfall: int() truncates toward zero, so where g < 0 (gradient noise is signed) the printed
 // g - int(g) lies in (-1, 0], not [0, 1), and the bands run backwards across g = 0. We use
 // g - floor(g) (= fract(g), in [0, 1)); grain_op = int_printed shows the printed form.
