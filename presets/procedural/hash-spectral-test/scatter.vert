@@ -1,5 +1,5 @@
 #version 450
-// The scatter plot of L650-662: vertex i is the plotted point of indices (i, i+1, i+2), one
+// The scatter plot of L661-664: vertex i is the plotted point of indices (i, i+1, i+2), one
 // pixel, added into the plot image: the first vertex_count (preset.toml) points only; the
 // histogram has all params.count of them.
 #include "sequences.glsl"

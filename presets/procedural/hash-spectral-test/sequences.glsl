@@ -3,7 +3,7 @@
 // (004_9a40ad89bdfc582a.txt L616-680: "calculate x_i = rand() ... create a 2D scatter plot of
 // all points (x_i, x_{i+1}), or in 3D using (x_i, x_{i+1}, x_{i+2})").
 //
-//   randu: IBM's RANDU, x_{n+1} = 65539 x_n mod 2^31 (L660, the notes' bad example)
+//   randu: IBM's RANDU, x_{n+1} = 65539 x_n mod 2^31 (L672, the notes' bad example)
 //   lcg:   Numerical Recipes' "quick and dirty" x_{n+1} = 1664525 x_n + 1013904223 mod 2^32
 //   pcg:   a hash of the index, u_i = pcg3d(i, seed, 0).x (passes/common/hash.glsl)
 //   sin:   the shader hash of 002_644d46bdce7e5305.txt L1152-1155 / L2379-2381,
@@ -65,16 +65,16 @@ uint sequence_next(inout Sequence s) {
 }
 
 // The plotted point for the triple (u_i, u_{i+1}, u_{i+2}), as 32-bit fractions in [0, 1)^2:
-//   pairs:  (x_i, x_{i+1}), L650
+//   pairs:  (x_i, x_{i+1}), L663
 //   planes: (x_i, fract(9 x_i - 6 x_{i+1} + x_{i+2})): the triple measured along RANDU's dual
 //           lattice vector (9, -6, 1). Since 65539^2 = 6 * 65539 - 9 (mod 2^31),
 //           x_{i+2} = 6 x_{i+1} - 9 x_i (mod 1) for RANDU, so its triples lie on the 15 planes
-//           9x - 6y + z = k of L660's picture and the second coordinate is exactly 0. For a
+//           9x - 6y + z = k of L672's picture and the second coordinate is exactly 0. For a
 //           generator whose x_{i+2} is uniform and independent of (x_i, x_{i+1}) it is uniform.
 //           Mod 2^32 arithmetic on the fractions gives the fract() exactly. We add 1/2
 //           (kHalf) so that RANDU's 0 plots as a line through the middle (histogram row 16),
 //           not along the border.
-//   cube:   the unit cube of triples (L651: "or in 3D") seen edge-on to those planes: screen
+//   cube:   the unit cube of triples (L664: "or in 3D") seen edge-on to those planes: screen
 //           y along (9, -6, 1), screen x along (-9, 6, 117) (perpendicular to it and to the view
 //           direction (-6, -9, 0), which lies in the planes). RANDU shows its planes as lines
 //           1/sqrt(118) apart; any generator fills a hexagon-like shadow of the cube, so this
