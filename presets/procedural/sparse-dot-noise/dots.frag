@@ -31,10 +31,10 @@ vec4 cell_randoms(vec2 cell) {
 // 1 if p lies in the dot of `cell` (if it has one), centres placed as described above.
 float in_dot(vec2 p, vec2 cell, bool inside) {
     vec4 r = cell_randoms(cell);
-    if (r.x <= params.threshold) return 0.0;                 // L494: a dot only if r1 > threshold
-    float radius = r.y * params.max_radius;                  // L495: radius = r2 (scaled)
+    if (r.x <= params.threshold) return 0.0;                 // L495: a dot only if r1 > threshold
+    float radius = r.y * params.max_radius;                  // L496: radius = r2 (scaled)
     vec2 centre = inside ? radius + (1.0 - 2.0 * radius) * r.zw : r.zw;  // (r3, r4)
-    return length(p - (cell + centre)) < radius ? 1.0 : 0.0;  // L496
+    return length(p - (cell + centre)) < radius ? 1.0 : 0.0;  // L497
 }
 
 const float kPi = 3.14159265358979;
