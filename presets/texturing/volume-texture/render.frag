@@ -1,0 +1,65 @@
+#version 450
+// Looking into the volume (the box [-1, 1]^3) along the view ray:
+//   slices: three axis-aligned planes through `slice` (texture coordinates), the nearest hit;
+//   fog:    emission-absorption ray march ("volumetric fog", L1771-1776):
+//               T_{k+1} = T_k exp(-sigma o(d_k) dt),   C += T_k (1 - exp(-sigma o(d_k) dt)) colour(d_k)
+//           with d_k = the trilinear sample of the 3D texture at step k and o(d) the opacity
+//           part of the transfer function (the shell faint, the lesions dense, so they show).
+// filtering = nearest fetches the voxel containing t with texelFetch (an alias image with a
+// nearest sampler is refused for 3D images by this host: see README).
+layout(location = 0) in vec2 uv;
+layout(location = 0) out vec4 hdr;
+uniform sampler3D volume;
+
+float density(vec3 t) {
+    if (params.filtering == FILTERING_LINEAR) return texture(volume, t).r;
+    ivec3 n = textureSize(volume, 0);
+    return texelFetch(volume, clamp(ivec3(floor(t * vec3(n))), ivec3(0), n - 1), 0).r;
+}
+
+// The transfer function: a colour and an opacity per density — air, tissue (up to 0.3),
+// shell (0.3 .. 0.65), lesions (above).
+vec3 transfer(float d) {
+    return d < 0.3 ? mix(vec3(0.1, 0.15, 0.4), vec3(0.9, 0.45, 0.35), d / 0.3)
+         : d < 0.65 ? vec3(0.85, 0.85, 0.9) : mix(vec3(1.0, 0.75, 0.15), vec3(1.0, 0.95, 0.5), (d - 0.65) / 0.35);
+}
+
+float opacity(float d) { return d < 0.3 ? 0.5 * d : d < 0.65 ? 0.25 * d : 4.0 * d; }
+
+void main() {
+    vec4 w = frame.inv_view_proj * vec4(uv * 2.0 - 1.0, 1.0, 1.0);
+    vec3 o = frame.camera_pos.xyz, dir = normalize(w.xyz / w.w - o);
+    vec3 bg = mix(vec3(0.02, 0.02, 0.03), vec3(0.08, 0.09, 0.12), uv.y);
+    // ray / box slabs
+    vec3 inv = 1.0 / dir, ta = (-1.0 - o) * inv, tb = (1.0 - o) * inv;
+    float t0 = max(max(min(ta.x, tb.x), min(ta.y, tb.y)), max(min(ta.z, tb.z), 0.0));
+    float t1 = min(min(max(ta.x, tb.x), max(ta.y, tb.y)), max(ta.z, tb.z));
+    if (t1 <= t0) { hdr = vec4(bg, 1.0); return; }
+    if (params.view == VIEW_SLICES) {
+        vec3 plane = params.slice * 2.0 - 1.0;           // in box space
+        vec3 tp = (plane - o) * inv;
+        float best = 1e30;
+        vec3 c = bg;
+        for (int a = 0; a < 3; ++a) {
+            float t = tp[a];
+            vec3 p = o + t * dir;
+            if (t > t0 - 1e-4 && t < t1 + 1e-4 && t < best) {
+                best = t;
+                float d = density(p * 0.5 + 0.5);
+                c = transfer(d) * (0.25 + 0.75 * d) + (abs(p[(a + 1) % 3]) > 0.985 || abs(p[(a + 2) % 3]) > 0.985 ? vec3(0.4) : vec3(0.0));
+            }
+        }
+        hdr = vec4(c, 1.0);
+        return;
+    }
+    int steps = params.steps;
+    float dt = (t1 - t0) / float(steps), transmittance = 1.0;
+    vec3 c = vec3(0.0);
+    for (int k = 0; k < steps; ++k) {
+        float d = density((o + (t0 + (float(k) + 0.5) * dt) * dir) * 0.5 + 0.5);
+        float alpha = 1.0 - exp(-params.sigma * opacity(d) * dt);
+        c += transmittance * alpha * transfer(d);
+        transmittance *= 1.0 - alpha;
+    }
+    hdr = vec4(c + transmittance * bg, 1.0);
+}
