@@ -20,7 +20,7 @@
 //   it in a narrow ring (minimum 1 - 2 a e^{-1.5} = 1 - 0.45 a at u = 1.22), which smears the
 //   noise into radial streaks; this one spreads it out.
 // - Folding: the map is one-to-one only while dr'/dr > 0, i.e. a < 4 for a straight segment;
-//   the param stops at 3 and jac (below), the Jacobian determinant of p -> p', is tested > 0.
+//   the corners fold earlier (a = 3: min -0.07), so the param stops at 2.5, and jac (below), the Jacobian determinant of p -> p', is tested > 0.
 // - Pushing away from the single nearest point instead: that point jumps across the medial
 //   axis (inside corners) and the image tears there; every term and weight here is
 //   continuous in p, so p' is.
