@@ -28,7 +28,7 @@ layout(location = 2) out vec4 bumped_out;   // per-pixel lighting with n'
 layout(location = 3) out vec4 normal_out;   // xyz = n', w = |n'| - 1
 #endif
 
-const float kGradStep = 2e-4;  // model units; (k eps)^2 / 6 = 3e-4 relative at 64 cycles/unit
+const float kGradStep = 2e-4;  // model units; (k eps)^2 / 6 = 6e-4 relative at 48 cycles/unit (k = 300)
 const float kTwoPi = 6.28318530718;
 
 float height(vec3 p) {
