@@ -143,6 +143,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
     watcher.watch(built->dependencies);
     auto ex = exec::Executor::create(**ctx, std::move(built.value()), &pipelines);
     if (!ex) return report(ex.error());
+    if (auto s = (*ex)->check_showable((*ex)->graph().desc.output); !s) return report(s.error());
     std::unique_ptr<exec::Executor> current = std::move(ex.value());
     // A runaway shader is cut off after --timeout: the watchdog reports which passes were in the
     // frame. The device cannot be trusted after that (lavapipe cannot cancel a shader), so the
@@ -233,6 +234,8 @@ int run(const RunOptions& o, const CommonOptions& c) {
                 Result<std::unique_ptr<exec::Executor>> next_ex =
                     *next ? exec::Executor::create(**ctx, std::move(next->value()), &pipelines)
                           : Result<std::unique_ptr<exec::Executor>>(next->error());
+                if (next_ex)
+                    if (auto a = (*next_ex)->check_showable((*next_ex)->graph().desc.output); !a) next_ex = a.error();
                 if (next_ex)
                     if (auto a = (*next_ex)->adopt_contents(*current); !a) next_ex = a.error();
                 if (!next_ex) {

@@ -13,13 +13,10 @@ namespace fs = std::filesystem;
 
 namespace pl::exec {
 
-fs::path passes_dir() {
-    if (const char* root = std::getenv("PASSLAB_ROOT")) return fs::path(root) / "passes";
-    return fs::path(PASSLAB_SOURCE_DIR) / "passes";
-}
+fs::path passes_dir() { return graph::passes_dir(); }  // one definition: graph/validate.cpp
 
 fs::path presets_dir() {
-    if (const char* root = std::getenv("PASSLAB_ROOT")) return fs::path(root) / "presets";
+    if (const char* root = std::getenv("PASSLAB_ROOT"); root && *root) return fs::path(root) / "presets";
     return fs::path(PASSLAB_SOURCE_DIR) / "presets";
 }
 

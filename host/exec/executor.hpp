@@ -53,6 +53,9 @@ class Executor {
     // Records a blit of `image` (its current contents) into `dst`, which the caller has put in
     // TRANSFER_DST_OPTIMAL; the source's transition comes from the planner. For presenting.
     Status record_blit_to(VkCommandBuffer cb, const std::string& image, VkImage dst, VkExtent2D dst_extent);
+    // Whether record_blit_to can show `image` (single-sampled colour, a blittable float/unorm
+    // format); the live lab checks this when a graph is built, so a bad [output] is a reload error.
+    Status check_showable(const std::string& image) const;
 
     const CompiledGraph& graph() const { return *graph_; }
     // Param values are read every frame, so the live lab's panel edits them here directly.

@@ -430,14 +430,41 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
     return ok_status();
 }
 
-Status Executor::record_blit_to(VkCommandBuffer cb, const std::string& name, VkImage dst, VkExtent2D ext) {
+Status Executor::check_showable(const std::string& name) const {
     auto it = res_.images.find(name);
     if (it == res_.images.end()) return make_error("no image named '" + name + "' to show");
+    const PhysImage* p = it->second.phys[0].get();
+    const auto& info = p->image.info();
+    const vk::FormatInfo* f = it->second.format;
+    // A blit converts only between float/unorm formats, never from integer or compressed ones;
+    // such an output needs a display pass (or the image viewer, which converts any format).
+    VkFormatProperties fp;
+    vkGetPhysicalDeviceFormatProperties(ctx_.physical(), info.format, &fp);
+    std::string why;
+    if (info.samples != VK_SAMPLE_COUNT_1_BIT) why = "is multisampled";
+    else if (p->image.aspect() & VK_IMAGE_ASPECT_DEPTH_BIT) why = "is a depth image";
+    else if (f->is_integer || f->compressed() || !(fp.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_SRC_BIT))
+        why = std::string("has format ") + f->name + ", which cannot be blitted";
+    if (why.empty()) return ok_status();
+    Error e = make_error("output image '" + name + "' " + why + ": the window cannot show it directly");
+    if (it->second.desc) e.loc = it->second.desc->loc;
+    e.resource = name;
+    e.hint = "add a fullscreen pass that converts it to rgba8 or rgba16f and name that in [output], or "
+             "inspect it in the panel's image viewer";
+    return e;
+}
+
+Status Executor::record_blit_to(VkCommandBuffer cb, const std::string& name, VkImage dst, VkExtent2D ext) {
+    if (auto s = check_showable(name); !s) return s;
+    auto it = res_.images.find(name);
     int parity = frames_rendered_ > 0 ? (frames_rendered_ - 1) & 1 : 0;
     PhysImage* p = it->second.phys[static_cast<size_t>(parity)].get();
     const auto& info = p->image.info();
-    if (info.samples != VK_SAMPLE_COUNT_1_BIT || (p->image.aspect() & VK_IMAGE_ASPECT_DEPTH_BIT))
-        return make_error("image '" + name + "' cannot be shown (multisampled or depth)");
+    // Formats that cannot be filtered linearly (32-bit float on some GPUs) are shown nearest.
+    VkFormatProperties fp;
+    vkGetPhysicalDeviceFormatProperties(ctx_.physical(), info.format, &fp);
+    VkFilter filter = fp.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT ? VK_FILTER_LINEAR
+                                                                                                 : VK_FILTER_NEAREST;
     BarrierBatch batch;
     require(batch, *p, usage_of(Access::transfer_src, 0));
     batch.flush(cb);
@@ -446,7 +473,7 @@ Status Executor::record_blit_to(VkCommandBuffer cb, const std::string& name, VkI
                   .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                   .dstOffsets = {{0, 0, 0}, {static_cast<int32_t>(ext.width), static_cast<int32_t>(ext.height), 1}}};
     vkCmdBlitImage(cb, p->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &b,
-                   VK_FILTER_LINEAR);
+                   filter);
     return ok_status();
 }
 

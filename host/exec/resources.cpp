@@ -3,6 +3,7 @@
 #include "exec/barriers.hpp"
 #include "exec/bind.hpp"
 #include "exec/texels.hpp"
+#include "graph/validate.hpp"
 #include "image/image.hpp"
 #include "scene/mesh.hpp"
 #include "vk/check.hpp"
@@ -71,18 +72,6 @@ vk::UniqueSampler make_sampler(vk::Context& ctx, const graph::SamplerDesc& s, co
     VkSampler smp;
     VK_CHECK(vkCreateSampler(ctx.device(), &sci, nullptr, &smp));
     return vk::UniqueSampler(ctx.device(), smp);
-}
-
-// The format an image is created with: file and generator images default to sRGB or float
-// formats when the user did not write one.
-std::string effective_format(const graph::ImageDesc& d) {
-    if (d.format_loc.known() || (d.file.empty() && d.generator.empty())) return d.format;
-    if (!d.file.empty()) {
-        std::string ext = std::filesystem::path(d.file).extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-        if (ext == ".exr" || ext == ".hdr") return "rgba32f";
-    }
-    return d.srgb ? "rgba8_srgb" : d.format;
 }
 
 struct Needs {
@@ -193,7 +182,7 @@ Result<GraphResources> create_resources(vk::Context& ctx, const CompiledGraph& g
             if ((pass == 0) != d.alias.empty()) continue;
             GraphImage gi;
             gi.desc = &d;
-            std::string fmt_name = effective_format(d);
+            std::string fmt_name = graph::effective_format(g.desc, d);
             gi.format = vk::find_format(fmt_name);
             if (!gi.format) return resource_error("unknown format '" + fmt_name + "'", d.format_loc, d.name);
             if (!d.alias.empty()) {

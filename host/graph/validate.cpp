@@ -60,7 +60,8 @@ std::string effective_format(const GraphDesc& g, const ImageDesc& d) {
         const ImageDesc* t = g.find_image(d.alias);
         return t && t != &d && t->alias.empty() ? effective_format(g, *t) : d.format;
     }
-    // Mirrors exec/resources.cpp: a written format wins; files and generators pick their own.
+    // The one definition (exec creates images with it): a written format wins; files and
+    // generators pick their own.
     if (d.format_loc.known() || (d.file.empty() && d.generator.empty())) return d.format;
     if (!d.file.empty()) {
         std::string ext = fs::path(d.file).extension().string();
