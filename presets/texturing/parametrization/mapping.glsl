@@ -4,6 +4,7 @@
 //                "only looks good from the front" (L1542): along z it smears.
 //   cylindrical: u = atan(z, x) / 2pi + 1/2,  v = (y - y_min) / height         (L1546-1556)
 //   spherical:   u = atan(z, x) / 2pi + 1/2,  v = acos(y / |p|) / pi           (L1556-1560)
+//   (v here runs from the top: texture row 0 at y_max / the top pole, for all four)
 //   box:         project onto the plane of the normal's dominant axis (L1562-1565: "used
 //                mainly for environment mapping")
 // All have distortions and singularities (L1569-1572): the poles of the sphere, the caps of
@@ -37,7 +38,9 @@ Param parametrize(int mapping, vec3 p, vec3 e, vec3 n, vec3 dpx, vec3 dpy) {
     vec2 px = vec2(-p.z, p.y) / (2.0 * e.zy) + 0.5, py = vec2(p.x, -p.z) / (2.0 * e.xz) + 0.5,
          pz = vec2(p.x, p.y) / (2.0 * e.xy) + 0.5;
     vec2 px_dx = dFdx(px), px_dy = dFdy(px), py_dx = dFdx(py), py_dy = dFdy(py), pz_dx = dFdx(pz), pz_dy = dFdy(pz);
-    float v_sphere = acos(clamp(p.y / max(length(p), 1e-12), -1.0, 1.0)) / kPi;
+    // 1 - polar angle / pi: 1 at the top pole, so that after the flip below the texture's
+    // top row lands on the top pole like the other mappings' top
+    float v_sphere = 1.0 - acos(clamp(p.y / max(length(p), 1e-12), -1.0, 1.0)) / kPi;
     vec2 dv_sphere = vec2(dFdx(v_sphere), dFdy(v_sphere));   // no seam in v
     if (mapping == MAPPING_PLANAR) {
         r.uv = pz; r.dx = pz_dx; r.dy = pz_dy;
@@ -57,7 +60,7 @@ Param parametrize(int mapping, vec3 p, vec3 e, vec3 n, vec3 dpx, vec3 dpy) {
         else { r.uv = pz; r.dx = pz_dx; r.dy = pz_dy; }
         r.u_jump = 0.0;
     }
-    r.uv.y = 1.0 - r.uv.y;   // texture row 0 at the top
+    r.uv.y = 1.0 - r.uv.y;   // texture row 0 (v = 0) at the top
     r.dx.y = -r.dx.y;
     r.dy.y = -r.dy.y;
     return r;
