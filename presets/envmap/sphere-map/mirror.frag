@@ -6,14 +6,14 @@
 // or, for comparison (lookup = cube_map), the cube map directly by R.
 #include "envmap/sphere_map.glsl"
 #include "map_basis.glsl"
+#include "envmap/reflect.glsl"
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;
 layout(location = 0) out vec4 hdr;
 uniform samplerCube env;
 uniform sampler2D sphere_map;
 void main() {
-    vec3 n = normalize(v_normal), V = normalize(v_world - frame.camera_pos.xyz);
-    vec3 R = V - 2.0 * dot(n, V) * n;
+    vec3 R = view_reflection(v_world, v_normal);
     vec3 r_eye = transpose(sphere_map_basis()) * R;
     vec3 c = params.lookup == LOOKUP_CUBE_MAP ? texture(env, R).rgb : texture(sphere_map, sphere_map_coord(r_eye)).rgb;
     hdr = vec4(params.tint * c, 1.0);
