@@ -20,6 +20,16 @@ float coc_linear_in_depth(float d, float focus, float fov_factor, float diameter
 // The Vulkan depth-buffer value of a view depth z > 0 (what a scene pass writes for the above).
 float depth_buffer_value(float z, float zn, float zf) { return zf * (z - zn) / (z * (zf - zn)); }
 
+// Its inverse: the view depth z of a depth-buffer value d (1/z = 1/zn - d (zf - zn)/(zn zf)).
+float view_depth_from_buffer(float d, float zn, float zf) { return zn * zf / (zf - d * (zf - zn)); }
+
+// The thin-lens circle the linear form above is a rewrite of, from the view depth z (a fraction
+// of the film height too): A f (z - F) / (z (F - f)) / 0.0186. A test reference, not 002's code.
+float coc_thin_lens(float z, float focus, float fov_factor, float diameter) {
+    float f = 0.035 * fov_factor, A = f / diameter;
+    return A * f * (z - focus) / (z * (focus - f)) / kFilmHeight;
+}
+
 // 002 L1530-1534 (the 64k intro's shader): the blur radius in pixels, f the focal length, d the
 // focal plane and o the depth, all in mm:
 //   a = o f / (o - f), b = d f / (d - f), c = (d - f) / (d fstop CoC), blur = |a - b| c

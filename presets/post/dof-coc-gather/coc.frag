@@ -6,20 +6,20 @@
 //   CoC(d) = (bias + scale d) / 0.0186          (0.0186: 35 mm widescreen film height)
 // which is the thin-lens circle A f (z - F) / (z (F - f)) rewritten for d (Vulkan depth:
 // 1/z = 1/zn - d (zf - zn)/(zn zf)). Negative in front of the focus, positive behind.
+// Both forms live in passes/post/coc.glsl (coc_linear_in_depth, coc_thin_lens), shared with
+// post/dof-hexagonal-bokeh and post/dof-ngon-bokeh.
 // x: CoC (fraction of the image height); y: the thin-lens formula from z; z: |x - y|.
+#include "post/coc.glsl"
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 coc;
 uniform sampler2D depth;
 uniform sampler2D focus_state;
-const float kNear = 0.1, kFar = 100.0, kFilm = 0.0186;
+const float kNear = 0.1, kFar = 100.0;  // scene.frag's clip planes
 void main() {
     float d = texelFetch(depth, ivec2(gl_FragCoord.xy), 0).r;
     float F = texelFetch(focus_state, ivec2(0), 0).r;
-    float f = 0.035 * params.fov_factor, A = f / params.diameter;
-    float scale = A * f * F * (kFar - kNear) / ((F - f) * kNear * kFar);
-    float bias = A * f * (kNear - F) / ((F - f) * kNear);
-    float c = (bias + scale * d) / kFilm;
-    float z = kNear * kFar / (kFar - d * (kFar - kNear));
-    float thin = A * f * (z - F) / (z * (F - f)) / kFilm;
+    float c = coc_linear_in_depth(d, F, params.fov_factor, params.diameter, kNear, kFar);
+    float z = view_depth_from_buffer(d, kNear, kFar);
+    float thin = coc_thin_lens(z, F, params.fov_factor, params.diameter);
     coc = vec4(c, thin, abs(c - thin), 1.0);
 }
