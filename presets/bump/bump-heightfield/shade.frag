@@ -19,6 +19,7 @@ layout(location = 1) out vec4 normal_out;   // xyz: the world-space normal the l
 uniform sampler2D off_tiles;
 uniform sampler2D off_flat;
 uniform sampler2D off_ramp;
+const float kSpecular = 0.35;   // highlight weight, as presets/bump/normal-mapping
 
 vec4 offsets(vec2 t) {
     if (params.heights == HEIGHTS_CONSTANT) return texture(off_flat, t);
@@ -50,7 +51,7 @@ void main() {
         float h_shift = offsets((v_uv + params.emboss_shift * l_ts.xy) * params.tiling).x;
         terms.x = max(emboss_diffuse(o.x, h_shift, params.emboss_shift, k, l_ts), 0.0);
     }
-    vec3 c = bump_combine(params.albedo, terms.x, terms.y, 0.35);
+    vec3 c = bump_combine(params.albedo, terms.x, terms.y, kSpecular);
     if (params.show == SHOW_NORMALS) c = n * 0.5 + 0.5;
     if (params.show == SHOW_HEIGHT) c = vec3(o.x);
     hdr = vec4(c, 1.0);

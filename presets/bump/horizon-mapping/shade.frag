@@ -21,6 +21,7 @@ uniform sampler2D hor_a_flat;
 uniform sampler2D hor_b_flat;
 uniform sampler2D hor_a_step;
 uniform sampler2D hor_b_step;
+const float kSpecular = 0.35;   // normal mapping's highlight weight (so shadows off = normal mapping)
 
 void main() {
     mat3 tbn = mat3(normalize(v_t), normalize(v_b), normalize(v_n));
@@ -41,7 +42,7 @@ void main() {
     if (!params.shadows) s = 1.0;
     vec3 n = normalize(tbn * (texel.xyz * 2.0 - 1.0));
     vec2 t = bump_blinn_phong_terms(n, l, v, params.shininess);
-    vec3 c = bump_combine(params.albedo, t.x * s, t.y * s, 0.35);
+    vec3 c = bump_combine(params.albedo, t.x * s, t.y * s, kSpecular);
     if (params.show == SHOW_SHADOW) c = vec3(s);
     if (params.show == SHOW_HORIZON) c = vec3(horizon_angle(hor_a_tiles, hor_b_tiles, v_uv, atan(l_ts.y, l_ts.x)) / 1.5707963);
     hdr = vec4(c, 1.0);

@@ -20,6 +20,9 @@ layout(location = 0) out vec4 hdr;
 uniform sampler2D nmap;   // the selected height field (select.frag)
 const float kPi = 3.14159265358979;
 const float kShadowBias = 0.02;   // depth units: keeps a hit from shadowing itself on slopes
+const vec3 kStoneA = vec3(0.62, 0.6, 0.52), kStoneB = vec3(0.5, 0.38, 0.3);   // the two tile stones
+const float kGrout = 0.35;       // albedo factor at the bottom of the relief (h = 0)
+const float kShininess = 40.0, kSpecular = 0.25;
 
 void main() {
     if (!(VISIBLE)) discard;
@@ -40,8 +43,8 @@ void main() {
     float s = params.shadows ? relief_shadow(nmap, hit.xy, hit.z, transpose(tbn) * l, params.depth_scale, params.shadow_steps, kShadowBias) : 1.0;
     // Albedo: two stones in a checker of tiles, darker towards the bottom of the relief.
     vec2 cell = floor(hit.xy * 4.0);
-    vec3 stone = mod(cell.x + cell.y, 2.0) < 1.0 ? vec3(0.62, 0.6, 0.52) : vec3(0.5, 0.38, 0.3);
-    vec3 albedo = stone * mix(0.35, 1.0, texel.a);
-    vec2 terms = bump_blinn_phong_terms(n, l, v, 40.0);
-    hdr = vec4(bump_combine(albedo, terms.x * s, terms.y * s, 0.25), 1.0);   // alpha 1: covered (tests)
+    vec3 stone = mod(cell.x + cell.y, 2.0) < 1.0 ? kStoneA : kStoneB;
+    vec3 albedo = stone * mix(kGrout, 1.0, texel.a);
+    vec2 terms = bump_blinn_phong_terms(n, l, v, kShininess);
+    hdr = vec4(bump_combine(albedo, terms.x * s, terms.y * s, kSpecular), 1.0);   // alpha 1: covered (tests)
 }
