@@ -1,5 +1,5 @@
 // The camera of a cube-map face, the inverse of cube_face_direction (cube.glsl). 001_fe43b953f362fae7.txt
-// L106-120 / 000_c9f7e5de708ecbb3.txt L2330-2336: "generate views of the environment, one for
+// L106-120 / 000_c9f7e5de708ecbb3.txt L2335-2340: "generate views of the environment, one for
 // each cube face, 90 degree view frustum, render directly to a texture".
 //
 // Face f has three axes: c (the face's outward axis, the camera's forward), a (the direction of
