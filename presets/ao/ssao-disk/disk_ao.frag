@@ -1,0 +1,64 @@
+#version 450
+// Screen-space ambient occlusion, "method 2" of 004_9a40ad89bdfc582a.txt L727-735:
+//   - every pixel re-projected to its camera-space point: the receiver p, normal n;
+//   - the neighbourhood radius R converted to a radius on screen; every pixel within
+//     (here every `step`-th) re-projected: sample points q_i;
+//   - the surface around each q_i approximated by a disk F_i of radius r_i, oriented towards
+//     the receiver, projected onto the receiver's hemisphere (F'_i), accumulated:
+//         A ~ sum over |q_i - p| < R of F'_i n.(q_i - p) = sum F_i / d_i^2 n.(q_i - p)   (L735)
+// As printed, n.(q_i - p) is not normalised: F_i/d_i^2 is a solid angle, n.(q_i - p) a length,
+// and A would grow with the scene's scale. The projected solid angle needs the cosine,
+// n.(q_i - p) / d_i: used here (a stated fix). Normalised by the hemisphere's projected solid
+// angle pi, the occlusion is O = (1/pi) sum w_i cos_i, and the visibility V = 1 - min(O, 1)
+// (overlapping disks count twice: the sum can pass 1 — part of why AO "appears exaggerated",
+// L755-761). Samples below the receiver's tangent plane (n.(q - p) <= 0) cannot occlude.
+//   w_i = F_i / d_i^2                           disk_model = approx (as printed, d >> r)
+//   w_i = 2 pi (1 - d_i / sqrt(d_i^2 + r_i^2))  disk_model = cap: the exact solid angle of a
+//                                               facing disk (L743: "compute area of
+//                                               spherical cap ... don't just scale F_i")
+// F_i: the area of surface one sample stands for: (step pixels)^2 at the sample's depth,
+// divided by |n_q . view| (a tilted surface covers more area per pixel, clamped at 1/kMinCos),
+// times disk_scale^2 (L739: "change ... radius of disks r_i").
+// orientation = receiver: the disk faces the receiver (as printed, L731); = normal: it lies in
+// the sample's tangent plane (L744: "orient disks perpendicular to normal in sample points"),
+// which multiplies w_i by |n_q . (p - q)| / d_i, the disk's foreshortening seen from p — a wall
+// seen edge-on from the receiver then stops counting in full.
+layout(location = 0) in vec2 uv;
+layout(location = 0) out float ao;
+uniform sampler2D normal;
+uniform sampler2D vpos;
+const float kPi = 3.14159265358979;
+const float kMinCos = 0.2;
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy), size = ivec2(frame.resolution.xy);
+    vec4 nw = texelFetch(normal, px, 0);
+    if (nw.w == 0.0) {
+        ao = 1.0;
+        return;
+    }
+    vec3 n = normalize(nw.xyz), p = texelFetch(vpos, px, 0).xyz;
+    // World size of one pixel at view depth z: z * 2 tan(fov/2) / height = 2 z / (|P11| height).
+    float px_per_unit = abs(frame.proj[1][1]) * frame.resolution.y / (2.0 * -p.z);
+    int reach = min(int(params.radius * px_per_unit), params.max_pixels);
+    float occlusion = 0.0;
+    for (int y = -reach; y <= reach; y += params.step)
+        for (int x = -reach; x <= reach; x += params.step) {
+            ivec2 q_px = px + ivec2(x, y);
+            if ((x == 0 && y == 0) || x * x + y * y > reach * reach) continue;
+            if (any(lessThan(q_px, ivec2(0))) || any(greaterThanEqual(q_px, size))) continue;
+            vec4 qn = texelFetch(normal, q_px, 0);
+            if (qn.w == 0.0) continue;
+            vec3 q = texelFetch(vpos, q_px, 0).xyz, pq = q - p;
+            float d = length(pq), h = dot(n, pq);
+            if (d >= params.radius || h <= 0.0) continue;
+            float pixel = float(params.step) * 2.0 * -q.z / (abs(frame.proj[1][1]) * frame.resolution.y);
+            float facing = max(abs(dot(normalize(qn.xyz), normalize(-q))), kMinCos);
+            float area = pixel * pixel / facing * params.disk_scale * params.disk_scale;  // F_i
+            float w = params.disk_model == DISK_MODEL_CAP ? 2.0 * kPi * (1.0 - d / sqrt(d * d + area / kPi))
+                                                          : area / (d * d);
+            if (params.orientation == ORIENTATION_NORMAL) w *= abs(dot(normalize(qn.xyz), pq)) / d;
+            occlusion += w * h / d;
+        }
+    ao = 1.0 - min(occlusion / kPi, 1.0);
+}
