@@ -9,7 +9,7 @@
 // the two components are uncorrelated (any non-integer offset of a few cells works).
 const vec3 kNoise2Offset = vec3(37.31, 17.77, 59.13);
 
-// noise2(p) of L435/L476: two uncorrelated gradient noises, each in about [-1, 1] and 0 at
+// noise2(p) of L434/L481: two uncorrelated gradient noises, each in about [-1, 1] and 0 at
 // every integer point (gradient noise, L344-389).
 vec2 gradient_noise2(vec3 p) {
     return vec2(gradient_noise(p), gradient_noise(p + kNoise2Offset));
@@ -27,7 +27,7 @@ float perlin_sum(vec3 x, int octaves, float persistence) {
     return sum;
 }
 
-// Perlin's turbulence (Perlin 1985, the marble vase of L585-598): sum_{i<N} |n(2^i x)| / 2^i,
+// Perlin's turbulence (Perlin 1985, the marble vase of L595): sum_{i<N} |n(2^i x)| / 2^i,
 // the absolute value folding each octave into sharp creases; in [0, 2).
 float turbulence(vec3 x, int octaves) {
     float sum = 0.0, amplitude = 1.0;
