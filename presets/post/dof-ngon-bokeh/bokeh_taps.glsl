@@ -1,4 +1,4 @@
-// getBokehTapSampleCoord of 002_644d46bdce7e5305.txt L1474-1490 (again at L1510-1524): a tap
+// getBokehTapSampleCoord of 002_644d46bdce7e5305.txt L1474-1487 (again at L1510-1522): a tap
 // of a (si + 1)^2 grid over the unit square to the unit disc by Shirley's concentric map, then
 // the disc to an n-gon (002 L1437-1455):
 //   (a, b) = 2 o - 1;  region |a| > |b|:  r = a, theta = pi/4 (b / a);  else r = b,

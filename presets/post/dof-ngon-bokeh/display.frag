@@ -1,5 +1,6 @@
 #version 450
-// Exposure + Hejl (display-encoded, to a UNORM target); or the blur radius (red, full at 16
+// Exposure + Hejl (display-encoded, to a UNORM target) of the gather (composited with the
+// sharp input at half resolution, below); or the blur radius (red, full at 16
 // px); or the tap pattern (each tap of the largest grid a dot on the unit disc / n-gon).
 #include "post/tonemap.glsl"
 #include "bokeh_taps.glsl"
@@ -10,7 +11,13 @@ uniform sampler2D result;
 uniform sampler2D blur;
 uniform sampler2D taps;
 void main() {
-    vec3 c = tonemap_hejl((params.show == SHOW_SHARP || (params.split && uv.x < 0.5) ? texture(color, uv) : texture(result, uv)).rgb * params.exposure);
+    vec4 sharp = textureLod(color, uv, 0.0), blurred = texture(result, uv);
+    // resolution = half: the gather is view/2 (upsampled bilinearly here); where the blur is
+    // under kSharpBelow px the 2x2 box of the half-res source would soften an in-focus surface,
+    // so the full-res input is shown there, the gather from kSharpBelow + 1 px on (linear between).
+    const float kSharpBelow = 1.0;
+    if (params.resolution == RESOLUTION_HALF) blurred = mix(sharp, blurred, clamp(texture(blur, uv).x - kSharpBelow, 0.0, 1.0));
+    vec3 c = tonemap_hejl((params.show == SHOW_SHARP || (params.split && uv.x < 0.5) ? sharp : blurred).rgb * params.exposure);
     if (params.show == SHOW_BLUR) c = vec3(texture(blur, uv).x / 16.0, 0.0, 0.0);
     if (params.show == SHOW_TAPS) {
         // The square [-1.1, 1.1]^2 at the centre of the view; the n-gon's outline in grey.
