@@ -57,6 +57,28 @@ vec3 shape_color_at(int scene, vec2 uv, vec2 square_offset) {
     }
     return c;
 }
+// The same test for many samples of one pixel (supersampled references): shape_triangles
+// evaluates the vertices once (shape_vertex's cos/sin per vertex would otherwise run per
+// sample), shape_color_in the loop of shape_color_at on them: the same operations on the same
+// values, so the same colour as shape_color_at(scene, uv, square_offset) bit for bit.
+void shape_triangles(int scene, vec2 square_offset, out vec2 tri[kShapeTriangles * 3], out bool solid[kShapeTriangles]) {
+    for (int t = 0; t < kShapeTriangles; ++t) {
+        vec2 o = shape_offset(scene, t, square_offset);
+        for (int v = 0; v < 3; ++v) tri[t * 3 + v] = shape_vertex(scene, t, v) + o;
+        solid[t] = abs(edge_fn(tri[t * 3], tri[t * 3 + 1], tri[t * 3 + 2])) > 0.0;
+    }
+}
+vec3 shape_color_in(int scene, const vec2 tri[kShapeTriangles * 3], const bool solid[kShapeTriangles], vec2 uv) {
+    vec3 c = vec3(0.0);
+    for (int t = 0; t < kShapeTriangles; ++t) {
+        vec2 a = tri[t * 3], b = tri[t * 3 + 1], d = tri[t * 3 + 2];
+        float e0 = edge_fn(a, b, uv), e1 = edge_fn(b, d, uv), e2 = edge_fn(d, a, uv);
+        bool inside = (e0 >= 0.0 && e1 >= 0.0 && e2 >= 0.0) || (e0 <= 0.0 && e1 <= 0.0 && e2 <= 0.0);
+        if (inside && solid[t]) c = shape_color(scene, t);
+    }
+    return c;
+}
+
 // Scene 2's texture: a fine procedural checker (about 1.3 cells per pixel at 640 px, well above
 // what the pixel grid can carry), shaded per fragment: aliasing no extra coverage sample fixes.
 vec3 shape_texture(vec2 uv) {

@@ -13,11 +13,15 @@ void main() {
         reference = error = vec4(0.0);
         return;
     }
+    // The triangles once per pixel, then 256 inside tests (shape_color_in = shape_color_at).
+    vec2 tri[kShapeTriangles * 3];
+    bool solid[kShapeTriangles];
+    shape_triangles(params.scene, vec2(0.0), tri, solid);
     vec3 sum = vec3(0.0);
     for (int y = 0; y < kRef; ++y)
         for (int x = 0; x < kRef; ++x) {
             vec2 p = (gl_FragCoord.xy - 0.5 + (vec2(x, y) + 0.5) / float(kRef)) * frame.resolution.zw;
-            sum += shape_color_at(params.scene, p, vec2(0.0));
+            sum += shape_color_in(params.scene, tri, solid, p);
         }
     reference = vec4(sum / float(kRef * kRef), 1.0);
     error = vec4(abs(texelFetch(result, ivec2(gl_FragCoord.xy), 0).rgb - reference.rgb), 1.0);
