@@ -2,18 +2,21 @@
 // Displacement mapping with prisms (004_9a40ad89bdfc582a.txt L1048-1053: "geometry shader
 // extrudes prism at each face; fragment shader ray-casts against height field; shade or discard
 // pixel depending on ray test"). For each triangle the geometry shader emits the prism between
-// the triangle and its copy lifted by params.height along the face normal N_f: the top and
-// three side quads (the bottom is the surface itself: a ray from outside cannot enter there).
-// Inside the prism, texture space (u, v, w) -- w = 0 on the triangle, 1 on the top -- is an
-// affine image of world space:
+// the triangle and its copy lifted by params.height along the vertex normals (q_i = p_i +
+// n_i height): the top and three side quads (the bottom is the surface itself: a ray from
+// outside cannot enter there). Neighbouring prisms share their side faces exactly (the same
+// corners, the quads split along the same diagonal: prism_faces.glsl), so together they fill
+// the shell without gaps or overlaps.
+// The ray is followed in texture space (u, v, w), w = 0 on the triangle, 1 at the top, through
+// the triangle's affine map
 //     P(u, v, w) = p0 + P_u (u - u0) + P_v (v - v0) + N_f height w
 // with [P_u P_v] = [v1 v2][u1 u2]^-1, the triangle's own frame (001_fe43b953f362fae7.txt
-// L819-855, passes/bump/triangle_frame.glsl). Each vertex carries its (u, v, w); the matrix
-// M = [P_u P_v N_f height], p0 and the corners go flat to the fragment shader, which marches the
-// eye ray in (u, v, w). Lifting along N_f (not the vertex normals) keeps every prism exactly
-// affine; on a curved mesh neighbouring prisms then leave wedge gaps above convex edges and
-// overlap above concave ones (stated in the README).
+// L819-855, passes/bump/triangle_frame.glsl), and N_f its face normal. The map is exact on the
+// triangle (w = 0) and approximate above it, where the lifted prism leans with the vertex
+// normals. M = [P_u P_v N_f height], the corners and vertex normals go flat to the fragment
+// shader.
 #include "bump/triangle_frame.glsl"
+#include "prism_faces.glsl"
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 15) out;
 layout(location = 0) in vec3 v_world[];
@@ -30,6 +33,8 @@ layout(location = 7) flat out vec2 g_uv2;
 layout(location = 8) flat out vec3 g_n0;
 layout(location = 9) flat out vec3 g_n1;
 layout(location = 10) flat out vec3 g_n2;
+layout(location = 11) flat out vec3 g_p1;
+layout(location = 12) flat out vec3 g_p2;
 
 mat3 m;
 vec3 p0;
@@ -38,10 +43,11 @@ vec2 uv2;
 vec3 n0, n1, n2;
 
 void emit(int i, float w) {
-    vec3 lift = m[2] * w;   // N_f * height * w
+    vec3 lift = normalize(v_n[i]) * params.height * w;
     g_world = v_world[i] + lift;
     g_uvw = vec3(v_uv[i], w);
     g_m = m, g_p0 = p0, g_uv01 = uv01, g_uv2 = uv2, g_n0 = n0, g_n1 = n1, g_n2 = n2;
+    g_p1 = v_world[1], g_p2 = v_world[2];
     gl_Position = frame.view_proj * vec4(g_world, 1.0);
     EmitVertex();
 }
@@ -60,7 +66,8 @@ void main() {
     // Sides: edge i -> j of the counter-clockwise triangle, quad (p_i, p_j, p_j', p_i') faces out.
     for (int e = 0; e < 3; ++e) {
         int i = e, j = (e + 1) % 3;
-        emit(i, 0.0); emit(j, 0.0); emit(i, 1.0); emit(j, 1.0);
+        if (prism_diagonal_from_i(v_world[i], v_world[j])) { emit(i, 1.0); emit(i, 0.0); emit(j, 1.0); emit(j, 0.0); }
+        else { emit(i, 0.0); emit(j, 0.0); emit(i, 1.0); emit(j, 1.0); }
         EndPrimitive();
     }
 }
