@@ -53,7 +53,6 @@ void emit(int i, float w) {
 }
 
 void main() {
-    if (!(ACTIVE)) return;   // one pass per height field; only the selected one emits
     mat2x3 d = triangle_pu_pv(v_world[0], v_world[1], v_world[2], v_uv[0], v_uv[1], v_uv[2]);
     if (dot(d[0], d[0]) == 0.0) return;   // degenerate: no surface, no prism
     vec3 N_f = normalize(cross(v_world[1] - v_world[0], v_world[2] - v_world[0]));
