@@ -1,6 +1,6 @@
 #version 450
 // MLAA step 1, edge detection (000_c9f7e5de708ecbb3.txt L3357: "Edge detection in input
-// image"; 003_cfc3b5b225ddab3d.txt L937-940: "detect carefully designed patterns").
+// image"; 003_cfc3b5b225ddab3d.txt L939: "Detect careful designed patterns").
 // An edge lies between two pixels whose luma differs by more than a threshold; each pixel
 // records the two edges on its left and top boundaries (the other two belong to its right and
 // bottom neighbours), as in Jimenez et al.'s GPU MLAA (GPU Pro 2, 2011):

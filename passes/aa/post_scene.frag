@@ -19,6 +19,14 @@ layout(location = 0) out vec4 color;
 layout(location = 1) out vec4 reference;
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
+    if ((SCENE) == kAaShapes) {  // the same values, the triangles set up once per pixel
+        vec2 tri[kShapeTriangles * 3];
+        bool solid[kShapeTriangles];
+        shape_triangles(0, vec2(0.0), tri, solid);
+        color = vec4(aa_shapes_sample(tri, solid, vec2(px) + 0.5 + (JITTER_PX), frame.resolution.xy), 1.0);
+        reference = vec4(aa_shapes_reference(tri, solid, px, frame.resolution.xy, SUPERSAMPLE), 1.0);
+        return;
+    }
     color = vec4(aa_scene_sample(SCENE, vec2(px) + 0.5 + (JITTER_PX), LINE, frame.resolution.xy), 1.0);
     reference = vec4(aa_scene_reference(SCENE, px, LINE, frame.resolution.xy, SUPERSAMPLE), 1.0);
 }

@@ -57,7 +57,8 @@ vec3 aa_scene_sample(int scene, vec2 p, vec2 line, vec2 size) {
 vec3 aa_scene_color(int scene, ivec2 px, vec2 line, vec2 size) { return aa_scene_sample(scene, vec2(px) + 0.5, line, size); }
 
 // What the pixel should be: its coverage-weighted colour. The shapes' and the checker's
-// 64-sample reference is slow on a CPU rasteriser (shapes.glsl walks 8 triangles per sample):
+// 64-sample reference is slow on a CPU rasteriser (shapes.glsl walks 8 triangles per sample;
+// post_scene.frag draws the shapes through aa_shapes_reference below, which sets them up once):
 // with supersample = false they return the one-sample colour instead (no reference).
 vec3 aa_scene_reference(int scene, ivec2 px, vec2 line, vec2 size, bool supersample) {
     if (scene == kAaStaircase) return vec3(stair_coverage(px, line, size));
@@ -66,6 +67,21 @@ vec3 aa_scene_reference(int scene, ivec2 px, vec2 line, vec2 size, bool supersam
     for (int k = 0; k < kRefSamples * kRefSamples; ++k) {
         vec2 o = (vec2(k % kRefSamples, k / kRefSamples) + 0.5) / float(kRefSamples);
         sum += aa_scene_sample(scene, vec2(px) + o, line, size);
+    }
+    return sum / float(kRefSamples * kRefSamples);
+}
+// The shapes scene with its triangles evaluated once per pixel (shapes.glsl's shape_triangles:
+// shape_vertex's cos/sin per vertex would otherwise run per sample): the same colours as
+// aa_scene_sample / aa_scene_reference for kAaShapes bit for bit, at a fraction of the cost.
+vec3 aa_shapes_sample(const vec2 tri[kShapeTriangles * 3], const bool solid[kShapeTriangles], vec2 p, vec2 size) {
+    return shape_color_in(0, tri, solid, p / size);
+}
+vec3 aa_shapes_reference(const vec2 tri[kShapeTriangles * 3], const bool solid[kShapeTriangles], ivec2 px, vec2 size, bool supersample) {
+    if (!supersample) return aa_shapes_sample(tri, solid, vec2(px) + 0.5, size);
+    vec3 sum = vec3(0.0);
+    for (int k = 0; k < kRefSamples * kRefSamples; ++k) {
+        vec2 o = (vec2(k % kRefSamples, k / kRefSamples) + 0.5) / float(kRefSamples);
+        sum += aa_shapes_sample(tri, solid, vec2(px) + o, size);
     }
     return sum / float(kRefSamples * kRefSamples);
 }
