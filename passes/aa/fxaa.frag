@@ -1,6 +1,6 @@
 #version 450
-// FXAA (Lottes 2009, "FXAA 3.11" quality path), named in 002_644d46bdce7e5305.txt L1850 among
-// Supraleiter's anti-aliasing modes. One pass on the final image, per pixel:
+// FXAA (Lottes 2009, "FXAA 3.11" quality path), named in 002_644d46bdce7e5305.txt L1852 among
+// Supraleiter's anti-aliasing modes (L1850-1857). One pass on the final image, per pixel:
 // 1. Local contrast: range = max - min of the luma of the pixel and its 4 neighbours; below
 //    max(EDGE_THRESHOLD_MIN, EDGE_THRESHOLD x max) the pixel is returned as it is (no edge).
 // 2. Sub-pixel aliasing: the 3x3 low-pass luma (weights 2 for N S E W, 1 for the corners, / 12)

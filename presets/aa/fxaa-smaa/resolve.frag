@@ -2,7 +2,7 @@
 // The chosen mode's output (002_644d46bdce7e5305.txt L1848-1857: none, FXAA, SMAA1x, SMAA T2x).
 // SMAA T2x = SMAA1x on a frame jittered by (+0.25, -0.25) or (-0.25, +0.25) px, alternating,
 // blended 50/50 with the previous frame's SMAA1x result ("alternative frame jitter and temporal
-// alternative frame blending", L1854-1855): two sub-pixel positions per pixel over two frames.
+// alternative frame blending", L1855-1856): two sub-pixel positions per pixel over two frames.
 // The scene here is static: the previous result needs no reprojection (SMAA's velocity
 // weighting is left out and said so). Frame 0 has no previous result: the current alone.
 layout(location = 0) out vec4 result;
