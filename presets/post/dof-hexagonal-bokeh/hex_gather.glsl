@@ -34,7 +34,7 @@ float doGatherAndApply(sampler2D pTexSource, vec2 pUV, float pBaseCoC, float pSt
     return lSampleFraction;
 }
 
-// The three directions of 002 (pass 1 L1357-1360, pass 2 L1386): up, and +-120 degrees from
+// The three directions of 002 (pass 1 L1356 and L1358, pass 2 L1386): up, and +-120 degrees from
 // it. 002's texture coordinates have v up; ours (Vulkan) have v down, so "up" (0, 1) is (0, -1) here and the
 // diagonals (+-0.866, -0.5) are (+-0.866, 0.5). The hexagon is symmetric about the horizontal
 // axis, so the shape is the same; on screen it is the printed one.

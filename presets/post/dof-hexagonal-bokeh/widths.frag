@@ -1,5 +1,5 @@
 #version 450
-// The bokeh's widths (tests): over every texel of `blurred` brighter than 10% of the peak, the
+// The bokeh's widths (tests): over every texel of `blurred` brighter than half the peak, the
 // spread of (p - centre) . u for u at 0, 60, 120 and 90 degrees:
 //   width(u) = max - min + 1   (texels; + 1: each texel is one wide)
 // A hexagon with vertices up and down (002's: its flats face 0, 60 and 120 degrees) has equal
