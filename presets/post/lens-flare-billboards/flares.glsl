@@ -3,8 +3,8 @@
 // billboards (alpha blending)". Flare i sits at
 //   p_i = L + t_i (C - L)        (pixels; L the light on screen, C the image centre)
 // t = 0 at the light, 1 at the centre, 2 at the light's mirror image through the centre. The
-// table (t, size as a fraction of the view height, colour, shape) is ours; the document shows
-// "star, ring or hexagonal shapes" (L3667) in its pictures only.
+// table (t, size as a fraction of the view height, colour, shape) is ours; the document only
+// names "star, ring or hexagonal shapes" (L3667) and shows two example pictures (L3671-3674).
 #ifndef PASSLAB_FLARES_GLSL
 #define PASSLAB_FLARES_GLSL
 const int kFlares = 8;
