@@ -32,7 +32,7 @@ uint bc1_quantize565(vec3 c) {
     return (q.x << 11) | (q.y << 5) | q.z;
 }
 
-// The colour map of a block (000 L1636-1640), 8-bit units in rgb, alpha 0 or 1. The mode is
+// The colour map of a block (000 L1634-1636), 8-bit units in rgb, alpha 0 or 1. The mode is
 // given by comparing the two 16-bit colours as unsigned integers:
 //   color0 >  color1: four colours, c2 = (2 c0 + c1) / 3, c3 = (c0 + 2 c1) / 3
 //   color0 <= color1: three colours, c2 = (c0 + c1) / 2, and index 3 = transparent black
