@@ -154,6 +154,14 @@ Result<CompiledGraph> build_graph(const fs::path& preset_toml, const BuildOption
             }
             cp.repeat = static_cast<int>(*r);
         }
+        if (!cp.desc->enabled_when.empty()) {
+            // Evaluated every frame by the executor; here once, so a wrong name fails the build.
+            if (auto r = graph::eval_scalar(cp.desc->enabled_when, env); !r) {
+                Error e = r.error();
+                e.pass = cp.desc->name;
+                return e;
+            }
+        }
         if (auto st = compile_pass(g, cp, opt); !st) return st.error();
         if (auto st = bind_pass(g.desc, cp); !st) return st.error();
     }

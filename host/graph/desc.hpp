@@ -216,6 +216,9 @@ struct PassDesc {
     std::string filter = "linear";     // blit filter
 
     bool enabled = true;
+    // `enabled = "params.verify"`: an expression over params (and view) evaluated every frame;
+    // the pass runs while it is nonzero, so test-only or optional passes cost nothing when off.
+    SizeExpr enabled_when;
     bool bake = false;  // run on an executor's first frame and again only when a param changes
     KeyLocs keys;  // "mesh", "indirect", "src", "dst", "image", "groups", "kind", ...
 };

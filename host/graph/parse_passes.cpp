@@ -317,7 +317,17 @@ Status parse_pass_body(const toml::table& t, const std::string& file, GraphDesc&
     if (auto s = r.str("dst", p.dst); !s) return s;
     if (auto s = r.str("image", p.image); !s) return s;
     if (auto s = r.choice("filter", p.filter, {"linear", "nearest"}); !s) return s;
-    if (auto s = r.boolean("enabled", p.enabled); !s) return s;
+    if (r.has("enabled")) {
+        // true/false, or a string expression over params re-evaluated every frame (nonzero = on).
+        const toml::node* n = r.get("enabled");
+        if (n->is_string()) {
+            if (auto s = r.size("enabled", p.enabled_when); !s) return s;
+            if (p.enabled_when.text.empty())
+                return r.error(what + ": enabled is true, false or an expression such as \"params.verify\"", r.value_loc("enabled"));
+        } else if (auto s = r.boolean("enabled", p.enabled); !s) {
+            return r.error(what + ": enabled is true, false or an expression such as \"params.verify\"", r.value_loc("enabled"));
+        }
+    }
     if (auto s = r.boolean("bake", p.bake); !s) return s;
     return r.finish();
 }
