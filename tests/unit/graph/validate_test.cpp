@@ -198,7 +198,7 @@ TEST(Validate, KindRequirements) {
              Case{"kind = \"draw\"\nvertex = \"test/quad.vert\"\nvertex_count = 3\ntess_eval = \"local.tese\"\ntargets = [\"ldr\"]", "both tess_control and tess_eval"},
              Case{"kind = \"draw\"\nvertex = \"test/quad.vert\"\nvertex_count = 3\ntess_control = \"local.tesc\"\ntess_eval = \"local.tese\"\ntargets = [\"ldr\"]", "topology = \"patches\""},
              Case{"kind = \"blit\"\nsrc = \"ldr\"\ndst = \"ldr\"", "src and dst are the same"},
-             Case{"kind = \"copy\"\nsrc = \"buf\"\ndst = \"ldr\"", "dst buffer 'ldr' does not exist"},
+             Case{"kind = \"copy\"\nsrc = \"buf\"\ndst = \"ldx\"", "dst image or buffer 'ldx' does not exist"},
              Case{"kind = \"mips\"\nimage = \"ldr\"", "has one mip"},
              Case{"kind = \"compute\"\ncompute = \"test/scale_inplace.comp\"\ngroups = 1\nswap = [\"ldr\", \"ldr2\"]", "add repeat"},
          }) {
