@@ -13,6 +13,11 @@
 //    if that end's luma turns the right way (the edge really bends towards this pixel); then
 //    one bilinear fetch at the offset position.
 // Reads `color` (linear filtering, clamp), writes `fxaa`. Luma: passes/aa/luma.glsl.
+// Deviation (stated): FXAA 3.11 expects the luma precomputed in alpha and filters *luma* in the
+// edge-end search; here the search takes the luma of the filtered colour (luma_uv), which
+// differs where the search position falls between texels of different colour (the luma is
+// non-linear: sRGB-encoded). The early exit, sub-pixel term and orientation read whole texels
+// and are unaffected.
 #include "aa/luma.glsl"
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 fxaa;
