@@ -1,7 +1,8 @@
 #version 450
 // The deferred presets' scene: FLOOR draws the ground plane, otherwise the mesh is instanced
 // over a jittered 8 x 8 grid (hash-placed sizes, passes/deferred/objects.glsl). World position,
-// normal, and a per-object material (albedo, specular) to the fragment shader.
+// normal, and a per-object material (albedo, specular) to the fragment shader. VISIBLE (an
+// expression, optional) hides the draw when false: every vertex outside the clip volume.
 #include "deferred/objects.glsl"
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
@@ -22,4 +23,7 @@ void main() {
     v_world = p;
     v_normal = n;
     gl_Position = frame.view_proj * vec4(p, 1.0);
+#ifdef VISIBLE
+    if (!(VISIBLE)) gl_Position = vec4(0.0, 0.0, -2.0, 1.0);
+#endif
 }
