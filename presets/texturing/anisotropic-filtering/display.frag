@@ -7,8 +7,9 @@ uniform sampler2D trilinear_img;
 uniform sampler2D hardware_img;
 uniform sampler2D shader_img;
 uniform sampler2D reference_img;
+#include "strips.glsl"
 void main() {
-    int which = params.show == SHOW_SPLIT ? min(int(uv.x * 4.0), 3) : params.show;
+    int which = shown_filter(uv.x);
     vec4 c = which == SHOW_TRILINEAR ? texture(trilinear_img, uv)
            : which == SHOW_HARDWARE ? texture(hardware_img, uv)
            : which == SHOW_SHADER ? texture(shader_img, uv)

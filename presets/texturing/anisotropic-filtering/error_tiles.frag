@@ -15,6 +15,7 @@ void main() {
     ivec2 size = textureSize(reference_img, 0), base = ivec2(gl_FragCoord.xy) * 16;
     sq = vec4(0.0);
     sum = vec4(0.0);
+    if (!params.analysis) return;   // the filter images are only partly evaluated (strips.glsl)
     for (int y = base.y; y < min(base.y + 16, size.y); ++y)
         for (int x = base.x; x < min(base.x + 16, size.x); ++x) {
             vec4 r = texelFetch(reference_img, ivec2(x, y), 0);

@@ -6,7 +6,9 @@
 #include "ground.glsl"
 layout(location = 0) out vec4 reference_out;
 uniform sampler2D tex_level0;
+#include "strips.glsl"
 void main() {
+    if (!filter_needed(SHOW_REFERENCE, gl_FragCoord.x)) { reference_out = vec4(0.0); return; }
     int n = params.ref_grid;
     vec3 sum = vec3(0.0);
     float hits = 0.0;
