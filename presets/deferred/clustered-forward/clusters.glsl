@@ -20,18 +20,21 @@ int cluster_index(ivec3 c) {
     return (c.z * g.y + c.y) * g.x + c.x;
 }
 
+// The exponential range; z_far is kept above z_near (both are free params).
+float slices_far() { return max(params.z_far, 1.01 * params.z_near); }
+
 int slice_of(float d) {
     if (d < params.z_near) return 0;
-    if (d >= params.z_far) return kSlices - 1;
-    float s = log(d / params.z_near) / log(params.z_far / params.z_near);
+    if (d >= slices_far()) return kSlices - 1;
+    float s = log(d / params.z_near) / log(slices_far() / params.z_near);
     return clamp(1 + int(floor(s * float(kSlices - 2))), 1, kSlices - 2);
 }
 
 // View-depth interval [near, far] of slice k.
 vec2 slice_depths(int k) {
     if (k == 0) return vec2(0.0, params.z_near);
-    if (k == kSlices - 1) return vec2(params.z_far, kFarAway);
-    float ratio = params.z_far / params.z_near;
+    if (k == kSlices - 1) return vec2(slices_far(), kFarAway);
+    float ratio = slices_far() / params.z_near;
     return params.z_near * vec2(pow(ratio, float(k - 1) / float(kSlices - 2)), pow(ratio, float(k) / float(kSlices - 2)));
 }
 
