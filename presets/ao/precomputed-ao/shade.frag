@@ -31,7 +31,12 @@ void main() {
                             sin(radians(params.light_elevation)),
                             cos(radians(params.light_elevation)) * sin(radians(params.light_azimuth))));
     vec3 kd = albedo_of(v_id), ka = kd;
-    vec3 ambient = params.ambient * ka, direct = params.direct * kd * max(dot(n, l), 0.0);
+    // I_a: constant (as printed), or a sky-to-ground gradient looked up along the normal or
+    // along the baked bent normal (000 L4865-4866: "used for advanced lighting instead of the
+    // surface normal": light arrives from where the surface is open).
+    vec3 lookup = params.sky_lookup == SKY_LOOKUP_BENT ? normalize(baked.gba) : n;
+    vec3 i_a = params.sky_lookup == SKY_LOOKUP_OFF ? vec3(1.0) : mix(vec3(0.35, 0.3, 0.25), vec3(1.1, 1.15, 1.25), 0.5 + 0.5 * lookup.y);
+    vec3 ambient = params.ambient * ka * i_a, direct = params.direct * kd * max(dot(n, l), 0.0);
     vec3 c;
     if (params.show == SHOW_AO) c = vec3(v_ao);
     else if (params.show == SHOW_BENT) c = 0.5 + 0.5 * normalize(baked.gba);
