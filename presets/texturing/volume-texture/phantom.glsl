@@ -1,4 +1,4 @@
-// The volume's content, a procedural "scan" (000_c9f7e5de708ecbb3.txt L1762-1769: "3D voxel
+// The volume's content, a procedural "scan" (000_c9f7e5de708ecbb3.txt L1762-1768: "3D voxel
 // array of texture values, explicit sampled function, e.g. from medical scanners (CT, MRT)"):
 // a head-like phantom of ellipsoids, in the spirit of Shepp and Logan, over [-1, 1]^3.
 // Density: shell 0.5, interior 0.2, two "ventricles" 0 and three lesions 0.8-1.0 (as if

@@ -1,20 +1,19 @@
 #version 450
 // Looking into the volume (the box [-1, 1]^3) along the view ray:
 //   slices: three axis-aligned planes through `slice` (texture coordinates), the nearest hit;
-//   fog:    emission-absorption ray march ("volumetric fog", L1771-1776):
+//   fog:    emission-absorption ray march ("volumetric fog", L1774, named only):
 //               T_{k+1} = T_k exp(-sigma o(d_k) dt),   C += T_k (1 - exp(-sigma o(d_k) dt)) colour(d_k)
 //           with d_k = the trilinear sample of the 3D texture at step k and o(d) the opacity
 //           part of the transfer function (the shell faint, the lesions dense, so they show).
-// filtering = nearest fetches the voxel containing t with texelFetch (an alias image with a
-// nearest sampler is refused for 3D images by this host: see README).
+// filtering: the same voxels through two samplers, `volume` (trilinear) and its alias
+// `volume_nearest` (nearest voxel), both clamped to the edge.
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 hdr;
 uniform sampler3D volume;
+uniform sampler3D volume_nearest;
 
 float density(vec3 t) {
-    if (params.filtering == FILTERING_LINEAR) return texture(volume, t).r;
-    ivec3 n = textureSize(volume, 0);
-    return texelFetch(volume, clamp(ivec3(floor(t * vec3(n))), ivec3(0), n - 1), 0).r;
+    return params.filtering == FILTERING_LINEAR ? texture(volume, t).r : texture(volume_nearest, t).r;
 }
 
 // The transfer function: a colour and an opacity per density — air, tissue (up to 0.3),

@@ -5,9 +5,13 @@
 //   g: |texelFetch(ijk) - phantom(centre)|   (the rgba16f rounding of the baked value)
 //   b: the voxel value itself (so the test can see the volume is not constant)
 //   a: |linear sample half-way between voxels i and i+1 along x - their mean|
+// nearest: max |nearest sample (alias volume_nearest) - texelFetch(ijk)| over the 8 points
+//   (ijk + 0.5 +- 0.45) / N inside the voxel (must be 0)
 #include "phantom.glsl"
 layout(location = 0) out vec4 result;
+layout(location = 1) out float nearest;
 uniform sampler3D volume;
+uniform sampler3D volume_nearest;
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     const int n = 64;
@@ -20,4 +24,10 @@ void main() {
         mid = abs(texture(volume, t + vec3(0.5 / float(n), 0.0, 0.0)).r - 0.5 * (stored + next));
     }
     result = vec4(abs(sampled - stored), abs(stored - phantom(voxel_centre(ijk, n))), stored, mid);
+    const float kInside = 0.45;   // offset from the centre, in voxels: well inside the voxel
+    nearest = 0.0;
+    for (int c = 0; c < 8; ++c) {
+        vec3 corner = vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1) * 2.0 - 1.0;
+        nearest = max(nearest, abs(texture(volume_nearest, t + corner * kInside / float(n)).r - stored));
+    }
 }
