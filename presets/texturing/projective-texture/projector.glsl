@@ -1,5 +1,6 @@
-// A slide projector (000_c9f7e5de708ecbb3.txt L2219-2258): "map object coordinates to the light
-// frustum ... express this as a projective transform, usually a 4x4 matrix". The projector is a
+// A slide projector (000_c9f7e5de708ecbb3.txt L2219-2223 "PTM simulates a video projector, or a
+// flashlight, slide projector", L2227-2232: "map object coordinates to light frustum; express
+// this as a projective transform; usually a 4x4 matrix"). The projector is a
 // second camera built here from params with passes/common/camera.glsl:
 //     (s, t, r, q) = B * P_proj * V_proj * (x, y, z, 1)
 //     slide coordinates (s/q, t/q), B = scale-and-bias [-1, 1] -> [0, 1]
