@@ -4,7 +4,7 @@
 // specular coefficient read from a texture,
 //     I_out = (r_d cos(phi) + r_s(u, v) cos(theta)^p) I_in                      (004 L123)
 // phi: angle between n and l; theta: between the mirror direction r = 2n(n.l) - l and v.
-// Multitexturing (000 L2148-2156): several samplers in one shader, combined freely, and the
+// Multitexturing (000 L2148-2155): several samplers in one shader, combined freely, and the
 // indirect (dependent) lookup — "1st texture lookup is used to index into 2nd texture":
 // gloss = indirect reads a material index from id_map (NEAREST: indices must not be blended)
 // and looks up (r_s, p) in the palette with it.
