@@ -1,11 +1,11 @@
 #version 450
-// The bake (000_c9f7e5de708ecbb3.txt L2157-2166, L2189-2194; 003_cfc3b5b225ddab3d.txt
+// The bake (000_c9f7e5de708ecbb3.txt L2157-2162, L2192-2196; 003_cfc3b5b225ddab3d.txt
 // L383-401): "map back to worldspace to calculate lighting" — each light-map texel centre
 // (i + 0.5) / N is taken back to its floor point and the view-independent diffuse irradiance
 // is stored there. Only low resolution is needed: diffuse light varies slowly (shadow edges
 // excepted). bake = true: this runs once, and again only when a param changes.
 // With PREMULTIPLIED the albedo is multiplied in, at the light map's resolution: the
-// "premultiply textures by light maps" of L2191-2193, and why it is bad (L2196-2208).
+// "premultiply textures by light maps" of L2198-2199, and why it is bad (L2203-2214).
 #include "lighting.glsl"
 layout(location = 0) out vec4 lightmap;
 #ifdef PREMULTIPLIED

@@ -1,5 +1,5 @@
 // The floor's colour for each mode, shared by the floor draw and the texel-centre check.
-//   lightmap:      albedo(uv * tiles) * lightmap(uv)      multitexturing at run time (L2194)
+//   lightmap:      albedo(uv * tiles) * lightmap(uv)      multitexturing at run time (L2200)
 //   per_pixel:     albedo(uv * tiles) * E(p)              the reference, lit every frame
 //   lightmap_only: lightmap(uv)
 //   premultiplied: premult(uv), albedo x light baked together at the light map's resolution

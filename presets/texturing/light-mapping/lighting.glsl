@@ -1,7 +1,7 @@
 // The static lighting of the floor, evaluated by the bake (into the light map), by the
 // per-pixel reference, and for the ball: two point lights, Lambert, and the ball's shadow
 // (an analytic ray-sphere test; "can take global effects (shadows, radiosity) into account",
-// 000_c9f7e5de708ecbb3.txt L2157-2170).
+// 000_c9f7e5de708ecbb3.txt L2168).
 //     E(p, n) = sum_k I_k max(n . l_k, 0) / |L_k - p|^2 * V_k(p)       (irradiance / pi omitted)
 #ifndef LIGHT_MAPPING_LIGHTING_GLSL
 #define LIGHT_MAPPING_LIGHTING_GLSL
