@@ -1,5 +1,5 @@
 #version 450
-// Ray casting the height field inside one prism (004_9a40ad89bdfc582a.txt L1048-1053). The
+// Ray casting the height field inside one prism (004_9a40ad89bdfc582a.txt L1048-1052). The
 // eye ray enters the prism at this fragment (its world position, taken into the prism's
 // (u, v, w) by M^-1); its direction there is M^-1 dir_world. It leaves the prism where it
 // passes outwards through one of its faces (prism_exit: ray-triangle tests against the base,

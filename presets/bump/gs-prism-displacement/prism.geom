@@ -1,5 +1,5 @@
 #version 450
-// Displacement mapping with prisms (004_9a40ad89bdfc582a.txt L1048-1053: "geometry shader
+// Displacement mapping with prisms (004_9a40ad89bdfc582a.txt L1048-1052: "geometry shader
 // extrudes prism at each face; fragment shader ray-casts against height field; shade or discard
 // pixel depending on ray test"). For each triangle the geometry shader emits the prism between
 // the triangle and its copy lifted by params.height along the vertex normals (q_i = p_i +
@@ -53,6 +53,9 @@ void emit(int i, float w) {
 }
 
 void main() {
+    // Two passes share this shader, one per tessellation of the torus (preset.toml): only the one
+    // that mesh_detail selects emits prisms.
+    if (params.mesh_detail != PRISM_MESH) return;
     mat2x3 d = triangle_pu_pv(v_world[0], v_world[1], v_world[2], v_uv[0], v_uv[1], v_uv[2]);
     if (dot(d[0], d[0]) == 0.0) return;   // degenerate: no surface, no prism
     vec3 N_f = normalize(cross(v_world[1] - v_world[0], v_world[2] - v_world[0]));
