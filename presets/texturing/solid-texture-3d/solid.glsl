@@ -1,7 +1,7 @@
-// A procedural solid texture (000_c9f7e5de708ecbb3.txt L1721-1760): T(x, y, z) maps object space
+// A procedural solid texture (000_c9f7e5de708ecbb3.txt L1721-1758): T(x, y, z) maps object space
 // straight to a colour, so the object is "carved" out of the material: rings continue across
 // every edge and through the inside, with no (u, v) at all. The carved-wood function as
-// printed (L1745-1751):
+// printed (L1746-1754):
 //     0 <= x^2 + y^2 < 1  =>  light brown
 //     1 <= x^2 + y^2 < 2  =>  dark brown
 //     2 <= x^2 + y^2 < 3  =>  yellow          "etc.": the three repeat, band = floor(x^2+y^2) mod 3
