@@ -5,7 +5,7 @@
 //   x = 1  planar, the box's top-left front corner (-e, e, *)                   (0, 0)
 //   x = 2  cylindrical, top edge on the +z axis: angle pi/2                      (0.75, 0)
 //   x = 3  spherical, the top pole: v = 0; u is undefined there (atan(0, 0): the singularity
-//          of L1569-1572, lavapipe returns 0.875), so only v is checked          (*, 0)
+//          of L1581, lavapipe returns 0.875), so only v is checked          (*, 0)
 //   x = 4  spherical, the equator on the -z axis: angle -pi/2                    (0.25, 0.5)
 //   x = 5  box, +x face centre                                                   (0.5, 0.5)
 //   x = 6  box, +x face, top corner at -z: seen from +x, -z is to the right      (1, 0)

@@ -1,13 +1,14 @@
 // Parametrisations: texture coordinates computed from the object-space point
-// (000_c9f7e5de708ecbb3.txt L1528-1591).
-//   planar:      (u, v) = (x, y) over the bounding box: "dump one of the coordinates" (L1538) —
-//                "only looks good from the front" (L1542): along z it smears.
-//   cylindrical: u = atan(z, x) / 2pi + 1/2,  v = (y - y_min) / height         (L1546-1556)
-//   spherical:   u = atan(z, x) / 2pi + 1/2,  v = acos(y / |p|) / pi           (L1556-1560)
+// (000_c9f7e5de708ecbb3.txt L1528-1589).
+//   planar:      (u, v) = (x, y) over the bounding box: "dump one of the coordinates" (L1542) —
+//                "only looks good from the front" (L1546): along z it smears.
+//   cylindrical: u = atan(z, x) / 2pi + 1/2,  v = (y - y_min) / height    (L1548-1551, L1560)
+//   spherical:   u = atan(z, x) / 2pi + 1/2,  v = acos(y / |p|) / pi      (L1550-1551, L1564)
+//   ("compute angles between vertex and object center", L1550; the slides give no formula)
 //   (v here runs from the top: texture row 0 at y_max / the top pole, for all four)
-//   box:         project onto the plane of the normal's dominant axis (L1562-1565: "used
+//   box:         project onto the plane of the normal's dominant axis (L1566-1569: "used
 //                mainly for environment mapping")
-// All have distortions and singularities (L1569-1572): the poles of the sphere, the caps of
+// All have distortions and singularities (L1579-1582): the poles of the sphere, the caps of
 // the cylinder, the box's edges.
 //
 // Pitfall (TECHNIQUES.md), fixed and stated: atan jumps from +pi to -pi behind the object,
