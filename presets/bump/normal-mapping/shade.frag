@@ -4,6 +4,8 @@
 // interpolated frame (T, B, N), then Blinn-Phong with it: max(l.n', 0) and max(h.n', 0)^s.
 // (000 transforms l and h into tangent space per vertex instead; the result is the same up to
 // interpolation — here the frame is interpolated and l, h stay in world space.)
+// The lighting is the bump family's one copy (passes/bump/lighting.glsl).
+#include "bump/lighting.glsl"
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_uv;
 layout(location = 2) in vec3 v_t;
@@ -16,9 +18,9 @@ void main() {
     mat3 tbn = mat3(normalize(v_t), normalize(v_b), normalize(v_n));
     vec4 texel = params.mode == MODE_FLAT_MAP ? texture(nmap_flat, v_uv) : texture(nmap, v_uv);
     vec3 n = params.mode == MODE_GEOMETRIC ? normalize(v_n) : normalize(tbn * (texel.xyz * 2.0 - 1.0));
-    vec3 l = normalize(params.light_dir), v = normalize(frame.camera_pos.xyz - v_world), h = normalize(l + v);
-    float diff = max(dot(l, n), 0.0), spec = diff > 0.0 ? pow(max(dot(h, n), 0.0), params.shininess) : 0.0;
-    vec3 c = params.albedo * (0.08 + diff) + vec3(0.35 * spec);
+    vec3 l = normalize(params.light_dir), v = normalize(frame.camera_pos.xyz - v_world);
+    const float kSpecular = 0.35;   // highlight weight
+    vec3 c = bump_blinn_phong(n, l, v, params.albedo, params.shininess, kSpecular);
     if (params.show == SHOW_NORMALS) c = n * 0.5 + 0.5;
     if (params.show == SHOW_HEIGHT) c = vec3(texture(nmap, v_uv).a);
     hdr = vec4(c, 1.0);

@@ -2,6 +2,7 @@
 // Parallax mapping (passes/bump/parallax.glsl): the eye vector into tangent space, the lookup
 // point shifted, then colour and normal read at T_n and lit (Blinn-Phong).
 #include "bump/parallax.glsl"
+#include "bump/lighting.glsl"   // the bump family's Blinn-Phong, one copy
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_uv;
 layout(location = 2) in vec3 v_t;
@@ -24,9 +25,9 @@ void main() {
     vec2 t = params.mode == MODE_PLAIN ? v_uv : parallax_uv(nmap, v_uv, V, params.scale, params.mode == MODE_LIMITED);
     offset = length(t - v_uv);
     vec3 n = normalize(tbn * (texture(nmap, t).xyz * 2.0 - 1.0));
-    vec3 l = normalize(params.light_dir), v = normalize(frame.camera_pos.xyz - v_world), h = normalize(l + v);
-    float diff = max(dot(l, n), 0.0), spec = diff > 0.0 ? pow(max(dot(h, n), 0.0), 48.0) : 0.0;
-    vec3 c = tile_color(t) * (0.08 + diff) + vec3(0.25 * spec);
+    vec3 l = normalize(params.light_dir), v = normalize(frame.camera_pos.xyz - v_world);
+    const float kShininess = 48.0, kSpecular = 0.25;
+    vec3 c = bump_blinn_phong(n, l, v, tile_color(t), kShininess, kSpecular);
     if (params.show == SHOW_OFFSET) c = vec3(offset / max(0.5 * params.scale, 1e-6));
     hdr = vec4(c, 1.0);
 }

@@ -3,6 +3,7 @@
 // occlusion mapping in 000_c9f7e5de708ecbb3.txt L2623-2635): find the eye ray's intersection
 // with the height field, then texture, normal and lighting at the hit.
 #include "bump/parallax.glsl"
+#include "bump/lighting.glsl"   // the bump family's Blinn-Phong, one copy
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_uv;
 layout(location = 2) in vec3 v_t;
@@ -41,9 +42,9 @@ void main() {
     vec2 cell = floor(t * 4.0);
     vec3 albedo = mod(cell.x + cell.y, 2.0) < 1.0 ? vec3(0.75, 0.5, 0.32) : vec3(0.6, 0.62, 0.66);
     albedo = mix(vec3(0.12, 0.1, 0.09), albedo, smoothstep(0.2, 0.6, texel.a));
-    vec3 l = normalize(params.light_dir), v = normalize(frame.camera_pos.xyz - v_world), h = normalize(l + v);
-    float diff = max(dot(l, n), 0.0), spec = diff > 0.0 ? pow(max(dot(h, n), 0.0), 48.0) : 0.0;
-    hdr = vec4(albedo * (0.08 + diff) + vec3(0.25 * spec), 1.0);
+    vec3 l = normalize(params.light_dir), v = normalize(frame.camera_pos.xyz - v_world);
+    const float kShininess = 48.0, kSpecular = 0.25;
+    hdr = vec4(bump_blinn_phong(n, l, v, albedo, kShininess, kSpecular), 1.0);
     vec2 delta = -V.xy / max(V.z, 1e-4) * params.depth_scale;
     float bound = (1.0 / float(params.linear_steps)) / exp2(float(params.binary_steps));
     error = params.heights == HEIGHTS_STEP ? abs(hit.z - true_step_depth(v_uv, delta)) / bound : 0.0;
