@@ -2,11 +2,7 @@
 // Texture animation (000_c9f7e5de708ecbb3.txt L1618-1627): "a texture matrix — can specify an
 // arbitrary 4x4 matrix, each frame! Possibilities: moving water or sky"; "custom shader
 // programs — can use video as texture".
-// The texture matrix here is the 2D homogeneous 3x3 built from the time t every frame:
-//     M(t) = T(scroll * t) * T(c) * R(spin * t) * T(-c),     (u', v', 1) = M(t) (u, v, 1)
-// The offsets are reduced modulo one texture period before they enter M (fract(scroll * t)):
-// the repeat address mode makes that invisible, and the coordinates stay small however long
-// the lab runs (float precision of u + 10^4 would be ~1e-3 texels).
+// The texture matrix M(t) is rebuilt from the time every frame (animation.glsl).
 // mode = video: layer floor(t * fps) mod N of the baked frames; water: two noise layers
 // scrolled in different directions and multiplied, the classic moving-water trick.
 layout(location = 0) in vec2 v_uv;
@@ -15,24 +11,14 @@ uniform sampler2D pattern;
 uniform sampler2D noise;
 uniform sampler2DArray frames;
 
-const float kTwoPi = 6.28318530718;
-
-mat3 texture_matrix(float t, vec2 scroll, float spin) {
-    vec2 offset = fract(scroll * t);                   // one period of the repeat
-    float a = kTwoPi * fract(spin * t);                // spin in turns per second
-    const vec2 c = vec2(0.5);
-    mat3 to_c = mat3(1, 0, 0, 0, 1, 0, -c.x, -c.y, 1), from_c = mat3(1, 0, 0, 0, 1, 0, c.x, c.y, 1);
-    mat3 rot = mat3(cos(a), sin(a), 0, -sin(a), cos(a), 0, 0, 0, 1);
-    mat3 move = mat3(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
-    return move * from_c * rot * to_c;
-}
+#include "animation.glsl"
 
 void main() {
     float t = frame.time + params.time_offset;
     vec3 c;
     if (params.mode == MODE_VIDEO) {
         int n = textureSize(frames, 0).z;
-        int k = int(floor(t * params.fps)) % n;
+        int k = video_frame(t, params.fps, n);
         c = texture(frames, vec3(v_uv, float(k))).rgb;
     } else if (params.mode == MODE_WATER) {
         vec2 a = (texture_matrix(t, params.scroll, 0.0) * vec3(v_uv, 1.0)).xy;
