@@ -4,7 +4,7 @@
 // k / N, so frame N would equal frame 0 — the loop has no jump.
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 color;
-const float kTwoPi = 6.28318530718;
+#include "animation.glsl"   // kTwoPi
 void main() {
     float phase = float(pl_iteration) / float(pl_iteration_count);
     const vec2 kDrops[3] = vec2[](vec2(0.3, 0.35), vec2(0.7, 0.6), vec2(0.45, 0.8));
