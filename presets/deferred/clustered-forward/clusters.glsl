@@ -1,4 +1,4 @@
-// The cluster grid of clustered forward shading (002_644d46bdce7e5305.txt L18-22: the engine's
+// The cluster grid of clustered forward shading (002_644d46bdce7e5305.txt L21-22: the engine's
 // "clustered forward" renderer, the 3D form of tiled forward shading, 003 L906-922): the view
 // frustum cut into kTilePx x kTilePx-pixel tiles in x and y and kSlices slices in view depth.
 // The slices are exponential: slice 1 .. kSlices - 2 span [z_near, z_far] with a constant

@@ -20,9 +20,6 @@ layout(std430) readonly buffer cluster_count { uint counts[]; };
 layout(std430) readonly buffer cluster_lights { uint slots[]; };
 const float kShininess = 32.0;
 const float kPaneAlpha = 0.35;
-#ifndef ACTIVE
-#define ACTIVE true
-#endif
 
 vec3 heat(float x) { return mix(vec3(0.1, 0.2, 0.8), vec3(1.0, 0.15, 0.05), clamp(x, 0.0, 1.0)); }
 
@@ -32,10 +29,6 @@ void main() {
 #else
     float alpha = 1.0;
 #endif
-    if (!(ACTIVE)) {
-        lit = vec4(0.0, 0.0, 0.0, alpha);
-        return;
-    }
     vec3 n = normalize(gl_FrontFacing ? v_normal : -v_normal);  // the pane is two-sided
     vec3 v = normalize(frame.camera_pos.xyz - v_world);
     float d = -(frame.view * vec4(v_world, 1.0)).z;
