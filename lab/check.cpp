@@ -19,8 +19,12 @@ int check(const std::string& preset, const std::vector<std::string>& set, const 
     exec::BuildOptions bo;
     bo.set = set;
     bo.cache_dir = cache_dir(c);
+    auto overlay = exercise_overlay(c);
+    if (!overlay) return report(overlay.error());
+    bo.overlay_dirs = *overlay;
     auto built = exec::build_graph(*toml, bo);
     if (!built) return report(built.error());
+    describe_exercise(c, *built);
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (!spirv_dir.empty()) {
         // <pass>.<stage>.spv, exactly what the executor would hand to the driver.

@@ -1,5 +1,6 @@
 #include "verbs.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -56,7 +57,38 @@ Result<LoadedPreset> resolve_and_configure(const std::string& preset, const std:
     lp.options.size = *parsed;
     lp.options.set = set;
     lp.options.cache_dir = cache_dir(c);
+    auto overlay = exercise_overlay(c);
+    if (!overlay) return overlay.error();
+    lp.options.overlay_dirs = *overlay;
     return lp;
+}
+
+Result<std::vector<std::filesystem::path>> exercise_overlay(const CommonOptions& c) {
+    if (c.exercise.empty()) return std::vector<std::filesystem::path>{};
+    std::error_code ec;
+    if (!std::filesystem::is_directory(c.exercise, ec)) {
+        Error e = make_error("--exercise " + c.exercise + ": no such folder");
+        e.code = ExitCode::usage;
+        return e;
+    }
+    return std::vector<std::filesystem::path>{std::filesystem::absolute(c.exercise)};
+}
+
+void describe_exercise(const CommonOptions& c, const exec::CompiledGraph& g) {
+    if (c.exercise.empty()) return;
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::weakly_canonical(fs::absolute(c.exercise));
+    std::error_code ec;
+    for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+        if (!it->is_regular_file()) continue;
+        const fs::path f = fs::weakly_canonical(it->path());
+        bool used = std::any_of(g.dependencies.begin(), g.dependencies.end(),
+                                [&](const fs::path& d) { return fs::weakly_canonical(d) == f; });
+        const std::string rel = f.lexically_relative(dir).string();
+        if (used) std::fprintf(stderr, "exercise: using your %s\n", rel.c_str());
+        else if (f.extension() != ".md" && f.extension() != ".txt")
+            std::fprintf(stderr, "exercise: warning: %s shadows no file the preset reads (is the name right?)\n", rel.c_str());
+    }
 }
 
 } // namespace pl::lab

@@ -20,6 +20,10 @@ int main(int argc, char** argv) {
         sub->add_flag("--no-cache", common.no_cache, "Do not read or write the SPIR-V cache");
         sub->add_option("--timeout", common.timeout_s, "Seconds a frame may take before it is cut off")->check(CLI::PositiveNumber);
     };
+    // Course exercises: the files in DIR shadow the preset's own of the same name.
+    auto add_exercise = [&](CLI::App* sub) {
+        sub->add_option("--exercise", common.exercise, "Folder whose files shadow the preset's (a student's exercise copy)");
+    };
 
     RenderOptions ro;
     auto* render_cmd = app.add_subcommand("render", "Render a preset headlessly to image files");
@@ -33,6 +37,7 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--pass", ro.passes, "Also write this image (repeatable)");
     render_cmd->add_option("--format", ro.format, "Force png or exr")->check(CLI::IsMember({"png", "exr"}));
     add_common(render_cmd);
+    add_exercise(render_cmd);
 
     TestOptions to;
     auto* test_cmd = app.add_subcommand("test", "Run presets' [[test]] cases headlessly (goldens, probes, properties)");
@@ -45,6 +50,7 @@ int main(int argc, char** argv) {
     test_cmd->add_option("--fail-dir", to.fail_dir, "Where actual/expected/diff images of failures go");
     test_cmd->add_option("--report", to.report_dir, "Write an HTML report with every case into this folder");
     add_common(test_cmd);
+    add_exercise(test_cmd);
 
     std::string preset;
     std::vector<std::string> set;
@@ -54,6 +60,7 @@ int main(int argc, char** argv) {
     std::string spirv_dir;
     check_cmd->add_option("--spirv", spirv_dir, "Also write every pass's SPIR-V into this folder");
     add_common(check_cmd);
+    add_exercise(check_cmd);
 
     bool verbose = false;
     auto* list_cmd = app.add_subcommand("list", "List the presets with family and summary");
@@ -74,6 +81,7 @@ int main(int argc, char** argv) {
     run_cmd->add_option("--inspect", rn.inspect, "Open the image viewer on this image");
     run_cmd->add_option("--capture", rn.capture, "With --frames: save the last frame's window, panel included, to this PNG");
     add_common(run_cmd);
+    add_exercise(run_cmd);
 
     BenchOptions bo;
     auto* bench_cmd = app.add_subcommand("bench", "Frame and per-pass GPU timings of a preset, peak memory");
@@ -84,6 +92,7 @@ int main(int argc, char** argv) {
     bench_cmd->add_option("--set", bo.set, "Param override name=value (repeatable)");
     bench_cmd->add_option("--json", bo.json, "Also write the figures as JSON to this file");
     add_common(bench_cmd);
+    add_exercise(bench_cmd);
 
     std::string gallery_dir;
     int gallery_width = 320;
@@ -97,6 +106,14 @@ int main(int argc, char** argv) {
     graph_cmd->add_option("preset", preset, "Preset folder, preset.toml, or name")->required();
     graph_cmd->add_flag("--dot", dot, "Graphviz dot output (the only format so far)");
     add_common(graph_cmd);
+
+    GradeOptions go;
+    auto* grade_cmd = app.add_subcommand("grade", "Grade a student's exercise copy against the preset's test cases");
+    grade_cmd->add_option("preset", go.preset, "Preset folder, preset.toml, or name")->required();
+    grade_cmd->add_option("--out", go.out_dir, "Folder for the images of failed cases (default grade-out)");
+    add_common(grade_cmd);
+    add_exercise(grade_cmd);
+    grade_cmd->get_option("--exercise")->required();
 
     NewOptions no;
     auto* new_cmd = app.add_subcommand("new", "Start a preset from a copy of another (never overwrites)");
@@ -121,5 +138,6 @@ int main(int argc, char** argv) {
     if (gallery_cmd->parsed()) return gallery(gallery_dir, gallery_width, common);
     if (graph_cmd->parsed()) return graph_dot(preset, common);
     if (new_cmd->parsed()) return new_preset(no, common);
+    if (grade_cmd->parsed()) return grade(go, common);
     return 2;
 }

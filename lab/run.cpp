@@ -113,6 +113,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
     // The first build must succeed: there is no last good frame yet.
     auto built = exec::build_graph(toml, bo);
     if (!built) return report(built.error());
+    describe_exercise(c, *built);
     auto exts = init_glfw_and_list_extensions();
     if (!exts) return report(exts.error());
     vk::ContextOptions co;

@@ -65,6 +65,11 @@ int test(const TestOptions& o, const CommonOptions& c) {
     ro.cache_dir = cache_dir(c);
     ro.fail_dir = o.fail_dir;
     ro.report_dir = o.report_dir;
+    auto overlay = exercise_overlay(c);
+    if (!overlay) return report(overlay.error());
+    ro.overlay_dirs = *overlay;
+    // An exercise copy is the student's: its renders must never become goldens.
+    if (!ro.overlay_dirs.empty()) ro.ci = true, ro.update = false;
     auto t0 = std::chrono::steady_clock::now();
     std::vector<ReportEntry> entries;
 

@@ -17,6 +17,7 @@ struct CommonOptions {
     bool validation = false;   // --validation (also PASSLAB_VALIDATION=1)
     bool no_cache = false;     // --no-cache
     double timeout_s = 20.0;   // --timeout: GPU watchdog per frame
+    std::string exercise;      // --exercise DIR: its files shadow the preset's (course exercises)
 };
 
 struct RenderOptions {
@@ -72,7 +73,13 @@ struct NewOptions {
     bool with_passes = false;  // also copy the passes/ files it reads (they shadow the library)
 };
 
+struct GradeOptions {
+    std::string preset;
+    std::string out_dir = "grade-out";  // actual/expected/diff images of failed cases
+};
+
 int render(const RenderOptions& o, const CommonOptions& c);
+int grade(const GradeOptions& o, const CommonOptions& c);
 int new_preset(const NewOptions& o, const CommonOptions& c);
 int bench(const BenchOptions& o, const CommonOptions& c);
 int run(const RunOptions& o, const CommonOptions& c);
@@ -98,5 +105,10 @@ struct LoadedPreset {
 };
 Result<LoadedPreset> resolve_and_configure(const std::string& preset, const std::string& size,
                                            const std::vector<std::string>& set, const CommonOptions& c);
+// --exercise DIR: the folder must exist; returns it as an overlay list (empty without the flag).
+Result<std::vector<std::filesystem::path>> exercise_overlay(const CommonOptions& c);
+// Prints which files of the exercise folder shadow the preset's, and warns about those that
+// shadow nothing the preset reads (a misspelt name would otherwise be silently ignored).
+void describe_exercise(const CommonOptions& c, const exec::CompiledGraph& g);
 
 } // namespace pl::lab

@@ -40,6 +40,7 @@ Result<Rendered> render_case(vk::Context& ctx, const fs::path& toml, const graph
                              const Variant& v = {}) {
     exec::BuildOptions bo;
     bo.cache_dir = opt.cache_dir;
+    bo.overlay_dirs = opt.overlay_dirs;
     if (t.size) bo.size = *t.size;
     bo.set_values = t.set;
     for (const auto& [k, val] : v.set) bo.set_values[k] = val;
@@ -160,6 +161,7 @@ std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml,
     std::vector<CaseResult> out;
     exec::BuildOptions base;
     base.cache_dir = opt.cache_dir;
+    base.overlay_dirs = opt.overlay_dirs;
     // Build once to learn the cases (and report a broken preset once); each case builds again
     // with its own size and params.
     auto probe_build = exec::build_graph(toml, base);
@@ -179,6 +181,7 @@ std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml,
         CaseResult cr;
         cr.preset = preset;
         cr.name = t.name;
+        cr.hint = t.hint;
         size_t msgs_before = ctx.validation_message_count();
         for (const auto& f : t.requires_features)
             if (!ctx.features().has(f)) {

@@ -31,6 +31,7 @@ struct CaseResult {
     std::string error;                    // build/render error (formatted), if any
     double ms = 0.0;
     std::string image_file;  // the checked image, written when a report is requested
+    std::string hint;        // the case's `hint` (course exercises)
 };
 
 struct RunOptions {
@@ -40,6 +41,8 @@ struct RunOptions {
     std::filesystem::path cache_dir;
     std::filesystem::path fail_dir;  // where actual/expected/diff images of failures go
     std::filesystem::path report_dir;  // when set, every case's image is written there too
+    // Folders whose files shadow the preset's own (a student's exercise copy; see BuildOptions).
+    std::vector<std::filesystem::path> overlay_dirs;
 };
 
 // Runs every [[test]] of one preset on `ctx`.

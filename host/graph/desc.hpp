@@ -267,6 +267,7 @@ struct TestDesc {
     std::map<std::string, double> tolerance;
     std::vector<CheckDesc> checks;     // probes and properties
     std::vector<std::string> requires_features;
+    std::string hint;  // shown by `passlab grade` when the case fails (course exercises)
     KeyLocs keys;  // "pass", "size", "set.NAME", ...
 };
 

@@ -117,6 +117,7 @@ Status parse_test_body(const toml::table& t, const std::string& file, GraphDesc&
         }
     }
     if (auto s = r.strings("requires", d.requires_features); !s) return s;
+    if (auto s = r.str("hint", d.hint); !s) return s;
     return r.finish();
 }
 

@@ -81,6 +81,20 @@ Error parse_log(const std::string& log, Stage stage, const std::map<std::string,
                 auto p = e.source_line.find(t[1].str());
                 if (p != std::string::npos) e.loc.col = static_cast<int>(p) + 1;
             }
+            // Syntax errors quote nothing ("'' : syntax error, unexpected IF, expecting ..."):
+            // the unexpected token is a keyword written in capitals; find it as a word.
+            static const std::regex unexpected(R"(syntax error, unexpected ([A-Z_0-9]+))");
+            std::smatch u;
+            if (e.loc.col == 0 && std::regex_search(msg, u, unexpected) && !e.source_line.empty()) {
+                std::string word = u[1].str();
+                std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+                std::smatch w;
+                if (std::regex_search(e.source_line, w, std::regex("\\b" + word + "\\b")))
+                    e.loc.col = static_cast<int>(w.position(0)) + 1;
+                // The token is only where the parser noticed; the mistake is usually just before.
+                if (msg.find("expecting COMMA or SEMICOLON") != std::string::npos)
+                    e.hint = "a ';' is probably missing at the end of the statement before this line";
+            }
             errors.push_back(std::move(e));
         } else if (line.rfind("ERROR: ", 0) == 0 && line.find("compilation errors") == std::string::npos) {
             other.push_back(line.substr(7));
