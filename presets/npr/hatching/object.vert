@@ -2,7 +2,8 @@
 // The hatched objects. KIND 0: the floor, 1: a ball, 2: a torus (scene objects); 3: one big
 // ball alone (scene ball, the test). The surface coordinates (u, v) of the mesh are scaled by
 // REPEAT so strokes keep about the same size on every object (a sphere's u runs round its
-// equator, twice as long as v from pole to pole).
+// equator, twice as long as v from pole to pole). WRAP (0/1 per axis): which directions close
+// on themselves.
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec2 uv;
@@ -19,8 +20,13 @@ void main() {
 #elif KIND == 3
     visible = params.scene == SCENE_BALL;
 #endif
+    // The stroke tile must repeat a whole number of times round a closed direction, or the
+    // strokes break at the mesh's u = 0 / 1 seam: u on the spheres, u and v on the torus
+    // (WRAP); open directions (the floor, a sphere's pole-to-pole v) keep the exact repeat.
+    vec2 repeats = REPEAT * params.stroke_density;
+    repeats = mix(repeats, max(floor(repeats + 0.5), vec2(1.0)), WRAP);
     v_normal = normal;
-    v_uv = uv * REPEAT * params.stroke_density;
+    v_uv = uv * repeats;
     gl_Position = frame.view_proj * vec4(p, 1.0);
     if (!visible) gl_Position = vec4(0.0, 0.0, -2.0, 1.0);
 }
