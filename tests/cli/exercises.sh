@@ -1,0 +1,28 @@
+#!/bin/sh
+# Every presets/<family>/<name>/exercise/ folder is a working exercise: as shipped (with its
+# TODOs) `passlab grade` fails, and with the reference's own files in its place it passes. So an
+# exercise can neither be solved already nor refer to a file the preset does not have.
+# Usage: exercises.sh PASSLAB WORKDIR
+set -eu
+passlab=$1 work=$2
+rm -rf "$work"; mkdir -p "$work"
+n=0
+for ex in $(find presets -type d -name exercise | sort); do
+  preset=$(dirname "$ex")
+  name=$(echo "$preset" | tr / _)
+  rc=0; "$passlab" grade "$preset" --exercise "$ex" --out "$work/$name.todo" > "$work/$name.todo.txt" 2>&1 || rc=$?
+  [ "$rc" = 1 ] || { echo "FAIL: $ex as shipped: exit $rc, expected 1 (an exercise must not pass untouched)" >&2; cat "$work/$name.todo.txt" >&2; exit 1; }
+  # The solution: each exercise file replaced by the reference file of the same relative name,
+  # from the preset folder or else from passes/.
+  sol="$work/$name.solution"; mkdir -p "$sol"
+  for f in $(cd "$ex" && find . -type f ! -name '*.md' ! -name '*.txt'); do
+    if [ -f "$preset/$f" ]; then ref="$preset/$f"; elif [ -f "passes/$f" ]; then ref="passes/$f"; else
+      echo "FAIL: $ex/$f has no reference file in $preset or passes/" >&2; exit 1; fi
+    mkdir -p "$sol/$(dirname "$f")"; cp "$ref" "$sol/$f"
+  done
+  "$passlab" grade "$preset" --exercise "$sol" --out "$work/$name.sol" > "$work/$name.sol.txt" 2>&1 ||
+    { echo "FAIL: $ex with the reference files does not pass" >&2; cat "$work/$name.sol.txt" >&2; exit 1; }
+  n=$((n + 1))
+done
+[ "$n" -gt 0 ] || { echo "FAIL: no exercise folders found" >&2; exit 1; }
+echo "exercises: $n graded (each fails as shipped and passes with the reference)"
