@@ -11,7 +11,7 @@ layout(location = 0) out vec3 e_world;
 layout(location = 1) out vec3 e_normal;
 uniform sampler2D height_map;
 const float kSize = 2.0;        // the plane's side (mesh size)
-const float kEps = 1.0 / 256.0; // difference step in world units (one height-map texel)
+const float kEps = 1.0 / 256.0; // difference step in world units: half a height-map texel (256 texels span kSize = 2), so the central difference spans one texel
 float height(vec2 xz) { return textureLod(height_map, xz / kSize + 0.5, 0.0).r; }
 void main() {
     vec3 b = gl_TessCoord;
