@@ -1,5 +1,5 @@
 #version 450
-// Lambert shading, 000_c9f7e5de708ecbb3.txt L1008-1011:
+// Lambert shading, 000_c9f7e5de708ecbb3.txt L893-898 (f_r = c_d / pi: L1011):
 //     L_o = c_d * max(n.l, 0) * I_L
 // "furnace" mode instead integrates the rendering equation numerically under a uniform white
 // environment (L_i = 1 everywhere): L_o = integral f_r L_i cos(theta) dw with f_r = c_d / pi
