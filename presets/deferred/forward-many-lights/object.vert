@@ -4,10 +4,10 @@
 // so every pass computes gl_Position by the same expression before any selection (the
 // `invariant` qualifier would say so, but glslang puts it on a block member, which SPIR-V
 // validation rejects).
-//   VISIBLE   (expression) whether this pass draws at all (the chosen method's passes)
 //   BATCH     only objects whose list length calls for exactly this specialised shader
 //   PER_LIGHT only objects that the pass's light (pl_iteration) illuminates
-// Hidden objects are sent outside the clip volume.
+// Hidden objects are sent outside the clip volume. (Which passes run at all, the chosen
+// method's, is the passes' `enabled` expression in preset.toml.)
 #include "deferred/objects.glsl"
 #include "object_lists.glsl"
 layout(location = 0) in vec3 position;
@@ -35,9 +35,6 @@ void main() {
     v_object = object;
     gl_Position = frame.view_proj * vec4(p, 1.0);
     bool visible = true;
-#ifdef VISIBLE
-    visible = VISIBLE;
-#endif
 #ifdef BATCH
     visible = visible && batch_of(list_words[object * kListWords]) == BATCH;
 #endif

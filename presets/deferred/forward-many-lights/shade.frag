@@ -1,8 +1,8 @@
 #version 450
 // Forward shading of many lights, the variants of 003_cfc3b5b225ddab3d.txt L586-798, all with
 // the same Lambert + normalised Blinn-Phong per light (passes/deferred/lights.glsl):
-//   LOOP, method naive  (L586-610): every light at every fragment, O(F x L) evaluations.
-//   LOOP, method culled (L632-662): "if (this fragment is illuminated by current light)" —
+//   LOOP, method naive  (L586-613): every light at every fragment, O(F x L) evaluations.
+//   LOOP, method culled (L632-661): "if (this fragment is illuminated by current light)" —
 //        the predicate is still evaluated for all F x L pairs; only the shading is skipped.
 //   BATCH = N (L701-789, option 1): the object's light list (lists.comp) with a shader
 //        specialised for exactly N lights: a fixed-count loop, no per-light test; the list is
