@@ -1,6 +1,6 @@
 #version 450
 // Gaussian: the y blur of the x blur (a round 2D kernel). Star (000_c9f7e5de708ecbb3.txt
-// L3102-3105, "filter in u and v separately, add u and v texture separately"): the x blur and a
+// L3104-3106, "filter in u and v separately, add u and v texture separately"): the x blur and a
 // y blur of the bright image, added, each carrying half: a cross of streaks.
 #include "post/gauss17.glsl"
 layout(location = 0) in vec2 uv;

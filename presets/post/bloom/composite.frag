@@ -1,6 +1,6 @@
 #version 450
-// Add the (bilinearly upsampled) bloom to the original, then tone map (000 L3090: "add filtered
-// image to original image"; 002 L700-710).
+// Add the (bilinearly upsampled) bloom to the original, then tone map (000 L3092: "add filtered
+// image to original image"; 002 L714).
 #include "post/tonemap.glsl"
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 result;
