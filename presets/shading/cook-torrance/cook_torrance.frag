@@ -1,8 +1,8 @@
 #version 450
 // Cook-Torrance (000_c9f7e5de708ecbb3.txt L1132-1256):
 //     f_r(l, v) = D(h) F(l, v) G(l, v) / (4 (n.v)(n.l))
-// D: Beckmann (L1150-1156; printed 4 m^2 or normalised pi m^2, passes/common/brdf.glsl),
-// G: Torrance-Sparrow (L1170-1180), F: Schlick with F0. Plus a small Lambert term.
+// D: Beckmann (L1163-1173; printed 4 m^2 or normalised pi m^2, passes/common/brdf.glsl),
+// G: Torrance-Sparrow (L1189-1201), F: Schlick with F0. Plus a small Lambert term.
 #include "common/brdf.glsl"
 #include "common/fresnel.glsl"
 layout(location = 0) in vec3 v_world;

@@ -2,8 +2,8 @@
 // The physically based model of 002_644d46bdce7e5305.txt L82-310 (after Karis, "Real Shading in
 // Unreal Engine 4"):
 //   f = diffuse / pi + D F V,        D: GGX (a = r^2),  F: Schlick,  V = G / (4 n.l n.v)
-//   diffuse  = base (1 - metallic)                     (002 L280-290: albedo, not "diffuse")
-//   F0 = spec = mix(0.08 specular, base, metallic)     (dielectrics ~4%, metals tinted)
+//   diffuse  = base (1 - metallic)                     (002 L275; L91: albedo, not "diffuse")
+//   F0 = spec = mix(0.08 specular, base, metallic)     (002 L276; dielectrics ~4%, metals tinted)
 // n.l and n.v are clamped to [1e-5, 1] as in 002. V is 002's Smith-GGX or Schlick-GGX
 // (k = r^2/2); both contain the 1/(4 n.l n.v), so nothing divides by it here. The ambient is a
 // uniform sky: diffuse gets it times base, specular times the Fresnel of n.v (a crude stand-in
