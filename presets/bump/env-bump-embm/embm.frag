@@ -8,7 +8,9 @@
 // map: tiles (the bevelled tile normal map), flat (the map (0.5, 0.5, 1) stored exactly, rgba16f),
 // flat8 (the same in 8 bits: 128/255 decodes to 0.0039, a tilt of 0.0055 rad),
 // geometric (no map: the interpolated normal, cube-env-reflection's shader exactly).
-// VISIBLE hides the model not selected.
+// VISIBLE hides the model not selected. R comes from passes/envmap/reflect.glsl (view_reflection,
+// 001 L251-260), the envmap family's one copy.
+#include "envmap/reflect.glsl"
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_uv;
 layout(location = 2) in vec3 v_t;
@@ -24,8 +26,7 @@ void main() {
     mat3 tbn = mat3(normalize(v_t), normalize(v_b), normalize(v_n));
     vec3 c = params.map == MAP_FLAT ? texture(nmap_flat, v_uv).xyz : params.map == MAP_FLAT8 ? texture(nmap_flat8, v_uv).xyz : texture(nmap, v_uv * params.tiling).xyz;
     vec3 n = params.map == MAP_GEOMETRIC ? normalize(v_n) : normalize(tbn * (c * 2.0 - 1.0));
-    vec3 V = normalize(v_world - frame.camera_pos.xyz);   // from the eye to the surface
-    vec3 R = V - 2.0 * dot(n, V) * n;
+    vec3 R = view_reflection(v_world, n);   // V - 2 (n'.V) n', V from the eye to the surface
     vec3 col = mix(params.decal, texture(env, R).rgb, params.reflectivity);
     if (params.show == SHOW_NORMALS) col = n * 0.5 + 0.5;
     if (params.show == SHOW_REFLECTION) col = R * 0.5 + 0.5;
