@@ -1,5 +1,5 @@
 #version 450
-// The bright pass of 002_644d46bdce7e5305.txt L812-822 (lens flare) and L698-704 (bloom):
+// The bright pass of 002_644d46bdce7e5305.txt L854-869 (lens flare; described at L813) and L698-704 (bloom):
 // average each 4x4 block (one quarter-resolution texel), keep what exceeds the threshold
 // (1.0 in HDR: the 0..1 range stays unbloomed), doubled:
 //   bright = max(0, mean_4x4(c) - params.threshold) * 2

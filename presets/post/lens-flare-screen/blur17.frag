@@ -1,5 +1,5 @@
 #version 450
-// Stage 3 of 002 (L824-846): the 17-tap linear-lookup Gaussian of passes/post/gauss17.glsl,
+// Stage 3 of 002 (L871-895): the 17-tap linear-lookup Gaussian of passes/post/gauss17.glsl,
 // x with BLUR_X, else y; with params.blur off the image passes through.
 #include "post/gauss17.glsl"
 layout(location = 0) in vec2 uv;

@@ -1,5 +1,5 @@
 #version 450
-// Stage 4 of 002 L900-930: the flare (bilinearly upsampled) modulated by lens dirt plus a
+// Stage 4 of 002 L955-974: the flare (bilinearly upsampled) modulated by lens dirt plus a
 // starburst rotated with the camera, added to the scene, then exposure, vignette and Hejl's
 // filmic curve (which includes the display encoding: its output goes straight to the screen):
 //   hejl(x) = x (6.2x + 0.5) / (x (6.2x + 1.7) + 0.06),  x = max(0, c - 0.004)

@@ -1,5 +1,5 @@
 #version 450
-// The lens dirt modulation texture (002 L771-774): soft smudges over a faint fBm haze.
+// The lens dirt modulation texture (002 L791-797): soft smudges over a faint fBm haze.
 #include "common/noise.glsl"
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 dirt;

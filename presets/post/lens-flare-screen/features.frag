@@ -1,5 +1,5 @@
 #version 450
-// Stage 2 of 002_644d46bdce7e5305.txt L870-895 (getLensflare), at quarter resolution:
+// Stage 2 of 002_644d46bdce7e5305.txt L922-944 (getLensflare), at quarter resolution:
 //   t = 1 - uv                              the image mirrored through the centre
 //   ghostVec = (0.5 - t) * dispersal         steps from t towards (and past) the centre
 //   ghosts:  sum_i blurred(t + i ghostVec) * w(t + i ghostVec) * lensColour(|0.5 - t'| / |0.5|)

@@ -1,5 +1,5 @@
 #version 450
-// The lens colour ramp (002 L858-862 samples it by the normalised distance from the centre):
+// The lens colour ramp (002 L828-830 and L940-941 sample it by the normalised distance from the centre):
 // a procedural spectrum-like ramp, warm at the centre, through green to blue at the rim, in the
 // spirit of the 64k intro's texture the talk shows (not its exact data).
 layout(location = 0) in vec2 uv;

@@ -1,5 +1,5 @@
 #version 450
-// The starburst modulation texture (002 L767-770): radial spokes of random strength, fading from
+// The starburst modulation texture (002 L785-789): radial spokes of random strength, fading from
 // the centre, as a function of the angle around the centre.
 #include "common/hash.glsl"
 layout(location = 0) in vec2 uv;
