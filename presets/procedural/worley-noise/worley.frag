@@ -1,6 +1,6 @@
 #version 450
 // Worley noise (passes/common/noise.glsl, 004_9a40ad89bdfc582a.txt L508-579) and its variants:
-//   F_k;  sum a_i F_i (004 L520-522);  sum p^i F1(2^i x) (004 L523-525, p = 0.5).
+//   F_k;  sum a_i F_i (004 L527-529);  sum p^i F1(2^i x) (004 L531-533, p = 0.5).
 #include "common/noise.glsl"
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 field;
