@@ -11,7 +11,7 @@
 #define PRESET_FBM_GLSL
 #include "common/noise.glsl"
 
-// The octave rotation of 002 L2401 (a rotation scaled by 1: rows are orthonormal).
+// The octave rotation of 002 L2400 (a rotation scaled by 1: rows are orthonormal).
 const mat3 kOctaveRotation = mat3(0.00, 0.80, 0.60, -0.80, 0.36, -0.48, -0.60, -0.48, 0.64);
 
 // uv in [0,1]^2 (top-left origin). Returns (f/s, f, s, 1).
