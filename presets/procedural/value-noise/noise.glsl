@@ -1,5 +1,5 @@
 // Value noise, 004_9a40ad89bdfc582a.txt L262-313: random values at the integer lattice,
-// interpolated with the fade h(t) = 3t^2 - 2t^3 (002_644d46bdce7e5305.txt L2383) or linearly.
+// interpolated with the fade h(t) = 3t^2 - 2t^3 (002_644d46bdce7e5305.txt L2385) or linearly.
 // The result is remapped from [0,1] to [-1,1] so its mean is 0.
 #include "common/hash.glsl"
 
