@@ -1,19 +1,13 @@
 #version 450
 // "Darken the environment lighting by the occlusion amount" (003 L334): a sky-coloured ambient
-// term from above, times AO, plus a weak key light so shapes stay readable.
+// term from above, times AO, plus a weak key light so shapes stay readable
+// (passes/ao/ambient_lit.glsl, shared with ao/ssao-disk).
+#include "ao/ambient_lit.glsl"
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 lit;
 uniform sampler2D normal;
 uniform sampler2D ao;
 void main() {
     vec4 nw = texture(normal, uv);
-    if (nw.w == 0.0) {
-        lit = vec4(0.6, 0.7, 0.85, 1.0);
-        return;
-    }
-    vec3 n_world = normalize(transpose(mat3(frame.view)) * nw.xyz);
-    float a = texture(ao, uv).r;
-    vec3 ambient = mix(vec3(0.3, 0.28, 0.27), vec3(0.55, 0.6, 0.7), 0.5 + 0.5 * n_world.y);
-    float key = max(dot(n_world, normalize(vec3(0.4, 0.8, 0.3))), 0.0);
-    lit = vec4(ambient * a + 0.25 * key * vec3(1.0, 0.95, 0.85), 1.0);
+    lit = vec4(nw.w == 0.0 ? kAoBackground : ao_ambient_lit(nw.xyz, texture(ao, uv).r), 1.0);
 }
