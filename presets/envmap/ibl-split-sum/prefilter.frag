@@ -1,5 +1,5 @@
 #version 450
-// The prefiltered environment of the split sum (002_644d46bdce7e5305.txt L419-480; Karis 2013):
+// The prefiltered environment of the split sum (002_644d46bdce7e5305.txt L419-518, listing L444-518; Karis 2013):
 // for the direction R of this texel, with N = V = R (the lobe assumed not to change shape with
 // the view), GGX-importance-sampled half vectors H around N and L = reflect(-V, H):
 //     r += env(L) n.l;   w += n.l;   out = r / max(w, 1e-4)
