@@ -3,7 +3,7 @@
 //   q_i = sum over j in N(i) of W_ij(I) p_j,   W_ij = G_s(|x_i - x_j|) G_r(|I_i - I_j|) / normalisation
 // A Gaussian has only the spatial weight G_s and "is always blurry"; the bilateral filter also
 // weighs by similarity of the range channel I: the colour itself (bilateral, I = p), or another
-// image such as the depth buffer (joint bilateral, L3170-3178: "avoids bleeding in depth of
+// image such as the depth buffer (joint bilateral, L3172-3177: "avoids bleeding in depth of
 // field"). Radius 2 sigma_s. FORCE_GAUSSIAN drops the range weight.
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 result;
