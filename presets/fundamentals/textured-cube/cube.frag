@@ -1,5 +1,5 @@
 #version 450
-// Lambert: L = albedo * (ambient + max(0, n . l))  (000_c9f7e5de708ecbb3.txt, diffuse shading).
+// Lambert: L = albedo * (ambient + max(0, n . l))  (000_c9f7e5de708ecbb3.txt L893-898, diffuse shading).
 // The texture is sampled with the image's sampler: trilinear with 16x anisotropy, so the grid
 // stays sharp on faces seen at grazing angles instead of blurring to gray.
 layout(location = 0) in vec3 v_normal;
