@@ -1,5 +1,5 @@
 // The "separate linear interpolator optimized 17x17 gaussian blur" of
-// 002_644d46bdce7e5305.txt L824-846 (also used by its lens flare), and the discrete kernel it
+// 002_644d46bdce7e5305.txt L871-895 (also used by its lens flare), and the discrete kernel it
 // stands for. Four symmetric pairs of bilinear lookups; each lookup sits between two texels i,
 // i+1 so the hardware fetches both with the weights (1 - f) W and f W (f = the fractional
 // offset). Recovering those discrete weights from the printed constants gives a Gaussian of

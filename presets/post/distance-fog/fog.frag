@@ -4,7 +4,7 @@
 //   linear  f = (d_end - d) / (d_end - d_start)    clamped to [0, 1] (the document does not)
 //   exp     f = exp(-d_f d)
 //   exp2    f = exp(-(d_f d)^2)
-// d is the distance from the camera (L14-15: length(camera.position - p)), here recovered from
+// d is the distance from the camera (L3012-3013, listing lines 14-15: length(camera.position - p)), here recovered from
 // the depth buffer: the pixel's NDC point through the inverse projection is its view-space
 // position, whose length is d. (The listing's uniform c_d is never used; we leave it out.)
 layout(location = 0) in vec2 uv;

@@ -1,6 +1,6 @@
 #version 450
 // One texel of a half-resolution image = the mean of a 2x2 block, three ways
-// (002_644d46bdce7e5305.txt L600-615, "you must believe in linear-space lighting"):
+// (002_644d46bdce7e5305.txt L545-546, "you must believe in linear-space lighting", L616-617):
 //   MODE_NAIVE  average the stored, gamma-encoded values as if they were light        (wrong)
 //   MODE_GAMMA  decode pow(c, 2.2), average, encode pow(m, 1/2.2)  (002's shader route)
 //   MODE_SRGB   sample the sRGB image at the block's centre with bilinear filtering: the sampler

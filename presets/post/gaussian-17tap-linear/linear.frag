@@ -1,5 +1,5 @@
 #version 450
-// One direction of the 8-lookup Gaussian (passes/post/gauss17.glsl, 002 L824-846).
+// One direction of the 8-lookup Gaussian (passes/post/gauss17.glsl, 002 L871-895).
 #include "post/gauss17.glsl"
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 blurred;

@@ -1,5 +1,5 @@
 #version 450
-// One fragment shader, several outputs (000_c9f7e5de708ecbb3.txt L2030-2039): location 0 the
+// One fragment shader, several outputs (000_c9f7e5de708ecbb3.txt L2026-2039): location 0 the
 // lit colour, location 1 the normal, location 2 the colour again (for the test).
 layout(location = 0) in vec3 v_normal;
 layout(location = 0) out vec4 color0;

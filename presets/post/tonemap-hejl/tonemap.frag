@@ -1,5 +1,5 @@
 #version 450
-// 002_644d46bdce7e5305.txt L636-653:
+// 002_644d46bdce7e5305.txt L641-654:
 //   exposure = uExposure * autokey(L) / max(L, 1e-8)      (L: mean luminance, the 1x1 mip)
 //   out = hejl(color * exposure)
 // autokey is not defined in the document: see passes/post/tonemap.glsl for the one we chose.
