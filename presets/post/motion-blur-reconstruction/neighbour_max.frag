@@ -1,7 +1,7 @@
 #version 450
-// Equation 2 of 002 L989: NeighbourMax = vmax of TileMax over the 3 x 3 tiles around, with the
-// listing's refinement (002 L1060-1090): a neighbour counts only if its velocity points along
-// the offset to this tile, |sum(sign(offset * v))| == |offset.x| + |offset.y|, so a
+// Equation 2 of 002 L1006: NeighbourMax = vmax of TileMax over the 3 x 3 tiles around, with the
+// listing's refinement (002 L1089-1118, the test at L1106-1113): a neighbour counts only if its
+// velocity points along the offset to this tile, |sum(sign(offset * v))| == |offset.x| + |offset.y|, so a
 // horizontal streak does not spread up and down into tiles it cannot reach.
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 neighbourmax;

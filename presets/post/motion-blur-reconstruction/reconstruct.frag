@@ -1,5 +1,5 @@
 #version 450
-// The reconstruction filter (002 L1100-1150, unoptimised listing): around pixel X, S taps Y
+// The reconstruction filter (002 L1123-1195, unoptimised listing): around pixel X, S taps Y
 // along the neighbourhood's dominant velocity vn, each weighted by
 //   alpha_Y = f cone(|X-Y|, |v_Y|) + b cone(|X-Y|, |v_X|) + 2 cylinder(|X-Y|, |v_Y|) cylinder(|X-Y|, |v_X|)
 //   f = softDepthCompare(z_X, z_Y): Y is in front and blurs over X;  b = the reverse
@@ -14,7 +14,7 @@ uniform sampler2D color;
 uniform sampler2D vq;
 uniform sampler2D neighbourmax;
 
-const float kEarlyOut = 0.5125;  // px, 002 L1136
+const float kEarlyOut = 0.5125;  // px, 002 L1170
 
 float cone(float d, float v) { return clamp(1.0 - d / max(v, 1e-7), 0.0, 1.0); }
 float cylinder(float d, float v) { return 1.0 - smoothstep(0.95 * v, 1.05 * v, d); }

@@ -1,5 +1,5 @@
 #version 450
-// Velocity scaling of 002_644d46bdce7e5305.txt L985-987 (McGuire et al. 2012):
+// Velocity scaling of 002_644d46bdce7e5305.txt L1000-1002, listing L1041-1046 (McGuire et al. 2012):
 //   q = 1/2 (X - X') * exposure * framerate
 //   V[X] = q * max(0.5 px, min(|q|, k)) / (|q| + eps)
 // The document's X - X' is in NDC (a pitfall: the blur then depends on the aspect ratio);

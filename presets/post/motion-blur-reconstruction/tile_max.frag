@@ -1,5 +1,5 @@
 #version 450
-// Equation 1 of 002 L988: TileMax[x, y] = vmax over the k x k tile of V, "vmax" keeping the
+// Equation 1 of 002 L1004: TileMax[x, y] = vmax over the k x k tile of V, "vmax" keeping the
 // vector of largest length. One fragment per tile. (002's listing sizes the loop by
 // uTexMotionBlurTempTileMax but declares uTexVelocityBuffer, a pitfall it prints as is; here
 // the bound is the full-resolution image's own size.)

@@ -1,5 +1,5 @@
 #version 450
-// Continuous motion blur by line sampling (000_c9f7e5de708ecbb3.txt L3608-3614): "for each
+// Continuous motion blur by line sampling (000_c9f7e5de708ecbb3.txt L3608-3613): "for each
 // pixel compute how the pixel moves over time, sample a line along that direction, accumulate
 // colour". With exposure s (params.shutter) a pixel p saw what the current frame shows at
 //   p + k s v,   k in [-1/2, 1/2] (centred, 000 L3638-3642) or k in [0, 1] (trailing),

@@ -2,7 +2,7 @@
 // Velocity dilation: the longest velocity within params.radius pixels along one axis (x with
 // DILATE_X, else y). Run x then y, it is the longest in the square window. Background pixels
 // next to a moving object take its velocity, so the gather in blur.frag smears the object over
-// what it swept instead of stopping at its outline (000 L3630-3637, "discontinuities at
+// what it swept instead of stopping at its outline (000 L3634, "discontinuities at
 // silhouettes"). With params.dilate off the velocity passes through unchanged.
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 vel_out;
