@@ -26,4 +26,25 @@ SceneBall scene_ball(int i) {
     b.material = vec4(0.25 + 0.7 * hash_pcg3(vec3(float(i), 7.0, 1.0)), 0.6 * h.y);
     return b;
 }
+
+// The crowd (deferred/clustered-forward, scene = crowd): kCrowdSide x kCrowdSide smaller balls,
+// kCrowdBalls in all, on a jittered grid over the floor, each bobbing up and down with the
+// frame clock (time in seconds) at its own hashed rate and phase — a few hundred moving
+// objects under the same lights. Bounding radius kBallMeshRadius * scale, as for scene_ball.
+const int kCrowdSide = 20, kCrowdBalls = kCrowdSide * kCrowdSide;
+const float kCrowdSpacing = 0.7;  // grid step (world units): 20 x 0.7 = 14 of the 16-unit floor
+const float kCrowdBob = 0.35;     // the largest lift above the floor (world units)
+
+SceneBall scene_ball_crowd(int i, float time) {
+    vec3 h = hash_pcg3(vec3(float(i), 23.0, 5.0));
+    vec2 cell = vec2(float(i % kCrowdSide), float(i / kCrowdSide)) - 0.5 * float(kCrowdSide - 1);
+    vec2 xz = (cell + (h.xy - 0.5) * 0.4) * kCrowdSpacing;
+    float s = 0.4 + 0.35 * h.z;  // bounding radius 0.2 .. 0.375
+    float bob = kCrowdBob * (0.5 - 0.5 * cos(time * (1.0 + 1.5 * h.x) + 6.2831853 * h.y));
+    SceneBall b;
+    b.centre = vec3(xz.x, kBallMeshRadius * s + bob, xz.y);
+    b.scale = s;
+    b.material = vec4(0.25 + 0.7 * hash_pcg3(vec3(float(i), 13.0, 3.0)), 0.6 * h.y);
+    return b;
+}
 #endif

@@ -1,7 +1,8 @@
 #version 450
 // The deferred presets' scene: FLOOR draws the ground plane, otherwise the mesh is instanced
 // over a jittered 8 x 8 grid (hash-placed sizes, passes/deferred/objects.glsl). World position,
-// normal, and a per-object material (albedo, specular) to the fragment shader. VISIBLE (an
+// normal, and a per-object material (albedo, specular) to the fragment shader. CROWD (optional):
+// the instances are the moving crowd of scene_ball_crowd instead (up to kCrowdBalls). VISIBLE (an
 // expression, optional) hides the draw when false: every vertex outside the clip volume.
 #include "deferred/objects.glsl"
 layout(location = 0) in vec3 position;
@@ -15,7 +16,11 @@ void main() {
     vec3 p = position, n = normal;
     v_material = kFloorMaterial;
 #else
+#ifdef CROWD
+    SceneBall b = scene_ball_crowd(gl_InstanceIndex, frame.time);
+#else
     SceneBall b = scene_ball(gl_InstanceIndex);
+#endif
     vec3 p = position * b.scale + b.centre;
     vec3 n = normal;
     v_material = b.material;
