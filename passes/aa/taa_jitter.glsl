@@ -1,7 +1,7 @@
-// TAA's sub-pixel jitter (000_c9f7e5de708ecbb3.txt L3415-3430): the projection is offset by
+// TAA's sub-pixel jitter (000_c9f7e5de708ecbb3.txt L3437-3444): the projection is offset by
 //   P[2][0] += (sx * 2 - 1) / width,  P[2][1] += (sy * 2 - 1) / height
 // i.e. by (sx - 1/2, sy - 1/2) pixels, with (sx, sy) from the Halton(2, 3) sequence (UE4's
-// choice, L3431-3434), 8 points cycled. Index 1.. (point 0 of a radical inverse is (0, 0)).
+// choice, L3450-3453), 8 points cycled. Index 1.. (point 0 of a radical inverse is (0, 0)).
 #ifndef PASSLAB_TAA_JITTER_GLSL
 #define PASSLAB_TAA_JITTER_GLSL
 float radical_inverse(int i, int base) {

@@ -1,5 +1,5 @@
 #version 450
-// Box filter (000_c9f7e5de708ecbb3.txt L3304-3306: "downsample final colour texture to target
+// Box filter (000_c9f7e5de708ecbb3.txt L3308-3309: "downsample final colour texture to target
 // resolution using fullscreen shader; box filter, Lanczos filter, Gaussian"): each pixel is the
 // mean of the N x N samples it covers in the N x image.
 layout(location = 0) in vec2 uv;

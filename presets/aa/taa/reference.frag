@@ -18,11 +18,15 @@ void main() {
     if (frame.index > 0 && params.speed == 0.0) {
         ref = texelFetch(ref_prev, px, 0);  // still scene: computed once
     } else {
-        vec2 offset = vec2(params.speed * frame.time, 0.0);
+        // The triangles once per pixel, then 256 inside tests (shape_color_in gives what
+        // shape_color_at would, bit for bit, without its cos/sin per vertex per sample).
+        vec2 tri[kShapeTriangles * 3];
+        bool solid[kShapeTriangles];
+        shape_triangles(0, vec2(params.speed * frame.time, 0.0), tri, solid);
         vec3 sum = vec3(0.0);
         for (int y = 0; y < kRef; ++y)
             for (int x = 0; x < kRef; ++x)
-                sum += shape_color_at(0, (gl_FragCoord.xy - 0.5 + (vec2(x, y) + 0.5) / float(kRef)) * frame.resolution.zw, offset);
+                sum += shape_color_in(0, tri, solid, (gl_FragCoord.xy - 0.5 + (vec2(x, y) + 0.5) / float(kRef)) * frame.resolution.zw);
         ref = vec4(sum / float(kRef * kRef), 1.0);
     }
     err_taa = length(texelFetch(taa, px, 0).rgb - ref.rgb);

@@ -1,14 +1,14 @@
 #version 450
 // The TAA resolve (000_c9f7e5de708ecbb3.txt L3385-3554):
 //  1. reconstruct this frame at the pixel centre from the 3x3 jittered samples, weighted by
-//     exp(-2.29 d^2) (a Gaussian fit to Blackman-Harris of width 3.3, L3450-3460; every pixel
+//     exp(-2.29 d^2) (a Gaussian fit to Blackman-Harris of width 3.3, L3475-3486; every pixel
 //     shares the jitter, so the weights are the same everywhere) — or the pixel's own sample;
-//  2. reproject: last frame's result at uv - motion (L3468-3480);
+//  2. reproject: last frame's result at uv - motion (L3488-3505);
 //  3. reject it (alpha = 1) where the object seen there last frame is nowhere in this pixel's
-//     3x3 neighbourhood now (L3482-3492; comparing with the pixel's own ID alone would reject
+//     3x3 neighbourhood now (L3516-3522; comparing with the pixel's own ID alone would reject
 //     every edge pixel, whose ID flips with the jitter, and undo the anti-aliasing);
-//  4. rectify: clip it to the min/max of this frame's 3x3 neighbourhood (L3494-3500);
-//  5. s_t = alpha x_t + (1 - alpha) s_(t-1)   (L3437-3446, alpha = 0.1).
+//  4. rectify: clip it to the min/max of this frame's 3x3 neighbourhood (L3528-3532);
+//  5. s_t = alpha x_t + (1 - alpha) s_(t-1)   (L3461-3471, alpha = 0.1).
 #include "aa/taa_jitter.glsl"
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 taa;

@@ -1,5 +1,5 @@
 #version 450
-// The shapes with what TAA needs besides colour (000 L3468-3480, L3490-3500): a motion vector
+// The shapes with what TAA needs besides colour (000 L3498-3505, L3521): a motion vector
 // (how far this surface moved in uv since the last frame: the square moves speed * delta along
 // x, the rest is still) and an object ID for history rejection.
 #include "aa/shapes.glsl"
