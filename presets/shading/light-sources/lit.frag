@@ -1,9 +1,9 @@
 #version 450
 // Analytic light sources (000_c9f7e5de708ecbb3.txt L830-878, L1296-1320), Lambert surface:
 //   L_o = sum over k of f_r E_k cos(theta_k),   f_r = albedo / pi
-//   point:        E = I / r^2 from p_l                               (L850-858)
+//   point:        E = I / r^2 from p_l                               (L849-857, L1304-1314)
 //   directional:  E constant, from direction d                       (L859-865)
-//   spot:         a point light times a cone factor around d         (L866-878)
+//   spot:         a point light times a cone factor around d         (L869-877)
 // The document gives the spot's inner and outer angles but no falloff between them; ours is
 // smoothstep(cos theta_o, cos theta_i, dot(-l, d)) (TECHNIQUES.md: say so).
 // LIGHTS is a bit mask of the lights this pass adds: 1 point, 2 spot, 4 directional.
