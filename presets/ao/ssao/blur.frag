@@ -1,5 +1,5 @@
 #version 450
-// 4x4 box blur (003 L333: "blur the occlusion map to reduce noise"): exactly one period of the
+// 4x4 box blur (003 L343: "blur the occlusion map to reduce noise"): exactly one period of the
 // 4x4 rotation pattern, so every output pixel averages all 16 kernel rotations. Offsets -2..1
 // keep the box's weights summing to 1; at the borders it clamps.
 layout(location = 0) in vec2 uv;

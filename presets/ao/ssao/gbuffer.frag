@@ -1,5 +1,5 @@
 #version 450
-// The G-buffer SSAO needs (003 L327-333, 004 L717-719): view-space normal and position.
+// The G-buffer SSAO needs (003 L341, 004 L719-720): view-space normal and position.
 layout(location = 0) in vec3 v_view_pos;
 layout(location = 1) in vec3 v_view_normal;
 layout(location = 0) out vec4 normal;

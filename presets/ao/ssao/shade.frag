@@ -1,5 +1,5 @@
 #version 450
-// "Darken the environment lighting by the occlusion amount" (003 L334): a sky-coloured ambient
+// "Darken the environment lighting by the occlusion amount" (003 L344): a sky-coloured ambient
 // term from above, times AO, plus a weak key light so shapes stay readable
 // (passes/ao/ambient_lit.glsl, shared with ao/ssao-disk).
 #include "ao/ambient_lit.glsl"

@@ -2,8 +2,8 @@
 // Screen-space ambient occlusion (000_c9f7e5de708ecbb3.txt L4901-4911; 003_cfc3b5b225ddab3d.txt
 // L327-356; 004_9a40ad89bdfc582a.txt L717-723): around the receiver p with normal n, sample
 // points v_i in the hemisphere of radius d; a point is hidden when the depth buffer, at the
-// pixel it projects to, holds a surface in front of it (seen from the viewpoint, 004 L720).
-//   A ~ sum over visible v_i of n.w_i  /  sum over all v_i of n.w_i        (004 L721, normalised
+// pixel it projects to, holds a surface in front of it (seen from the viewpoint, 004 L721).
+//   A ~ sum over visible v_i of n.w_i  /  sum over all v_i of n.w_i        (004 L722, normalised
 //                                                                          so open sky gives 1)
 // Samples: a fixed hemisphere kernel (lengths uniform in [0.1 d, d]), turned about n by one of 16 angles chosen
 // by the pixel's position in a 4x4 tile (the blur pass then averages the 16 rotations away).
