@@ -16,9 +16,11 @@ void main() {
     float dt = 0.5 * kPi / float(steps), sum = 0.0;
     for (int i = 0; i < steps; ++i) {
         float t = (float(i) + 0.5) * dt;
-        float nh = cos(0.5 * t);
+        // v = n = +z and l at angle t in the xz plane: h = (sin(t/2), 0, cos(t/2)). The lobes are
+        // the shader's own (passes/common/brdf.glsl), so a wrong factor there fails this table.
         // Row 1 is the plain lobe (n.h)^m with c_s = 1, as the blinn model uses it.
-        float f = normalized ? (m + 8.0) / (8.0 * kPi) * pow(nh, m) : pow(nh, m);
+        vec3 n = vec3(0.0, 0.0, 1.0), h = vec3(sin(0.5 * t), 0.0, cos(0.5 * t));
+        float f = normalized ? blinn_phong_normalized(n, h, m) : blinn_phong_lobe(n, h, m);
         sum += f * cos(t) * sin(t);
     }
     albedo = 2.0 * kPi * sum * dt;
