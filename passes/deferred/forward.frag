@@ -1,5 +1,5 @@
 #version 450
-// Forward shading of the same scene: every light, while drawing (000 L2770-2800). The material
+// Forward shading of the same scene: every light, while drawing (000 L2784-2788). The material
 // is rounded to 8 bits like the G-buffer's albedo image, so both paths light the same numbers.
 // ACTIVE (an expression) skips the light loop when nobody looks at the result.
 #include "deferred/lights.glsl"

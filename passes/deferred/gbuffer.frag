@@ -1,5 +1,5 @@
 #version 450
-// Pass 1 of deferred shading (000_c9f7e5de708ecbb3.txt L2850-2870; 003_cfc3b5b225ddab3d.txt
+// Pass 1 of deferred shading (000_c9f7e5de708ecbb3.txt L2885-2894; 003_cfc3b5b225ddab3d.txt
 // L419-478): no lighting, only what lighting will need, one image per attribute (MRT):
 //   albedo (rgb) + specular intensity (a)   rgba8
 //   world normal (xyz, w = 1 marks geometry) rgba16f

@@ -1,5 +1,5 @@
 #version 450
-// Pass 2 of deferred shading (000 L2871-2890): a fullscreen pass reads the G-buffer and sums
+// Pass 2 of deferred shading (000 L2900-2905): a fullscreen pass reads the G-buffer and sums
 // every light — shading cost O(pixels x lights) instead of O(fragments drawn x lights), so
 // overdraw no longer multiplies the lighting. PACKED reads the 12-byte layout: octahedral
 // normal, and the position rebuilt from the depth buffer through the inverse view-projection.

@@ -1,5 +1,5 @@
 // Screen-space velocity for the motion-blur presets (post/motion-blur-velocity,
-// post/motion-blur-reconstruction) (000_c9f7e5de708ecbb3.txt L3608-3614: "current and previous model-view
+// post/motion-blur-reconstruction) (000_c9f7e5de708ecbb3.txt L3611: "current and previous model-view
 // projection matrix form the velocity buffer"): where a point is now minus where it was one
 // frame ago, in pixels.
 //   v = (ndc_now - ndc_prev) / 2 * resolution

@@ -3,9 +3,9 @@
 #define PASSLAB_TONEMAP_GLSL
 #include "common/color.glsl"  // luminance()
 
-// Jim Hejl's filmic curve as printed in 002_644d46bdce7e5305.txt L636-641 (Hejl/Burgess-Dawson):
+// Jim Hejl's filmic curve as printed in 002_644d46bdce7e5305.txt L641-646 (Hejl/Burgess-Dawson):
 //   x = max(0, c - 0.004);  y = x (6.2 x + 0.5) / (x (6.2 x + 1.7) + 0.06)
-// Its output is display-encoded already (it contains the 1/2.2 gamma, 002 L645): write it to a
+// Its output is display-encoded already (it contains the 1/2.2 gamma, 002 L656): write it to a
 // UNORM target, never through another pow(1/2.2) or an sRGB target.
 vec3 tonemap_hejl(vec3 c) {
     vec3 x = max(vec3(0.0), c - 0.004);
