@@ -2,7 +2,7 @@
 // presets/bump/normal-mapping/shade.frag (ambient 0.08, specular weight `ks`), so presets that
 // must equal normal mapping (bump/horizon-mapping) can call the same code:
 //     c = albedo (0.08 + max(l.n, 0)) + ks max(h.n, 0)^s     (specular only where l.n > 0)
-// (000_c9f7e5de708ecbb3.txt L2540-2553: max(l.n', 0) and max(h.n', 0)^s, "combine using the
+// (000_c9f7e5de708ecbb3.txt L2543-2553: max(l.n', 0) and max(h.n', 0)^s, "combine using the
 // standard Phong equation"). n, l, v unit vectors in any one space.
 #ifndef PASSLAB_BUMP_LIGHTING_GLSL
 #define PASSLAB_BUMP_LIGHTING_GLSL

@@ -5,10 +5,10 @@
 #ifndef PASSLAB_PARALLAX_GLSL
 #define PASSLAB_PARALLAX_GLSL
 
-// Parallax mapping (001 L510-530): the height is assumed locally constant; rescale it around
+// Parallax mapping (001 L506-532): the height is assumed locally constant; rescale it around
 // the carrier, h_n = h s - 0.5 s (s ~ 0.01 in 001), and follow the eye ray to that height:
 //     T_n = T_0 + h_n V.xy / V.z
-// The offset grows without bound as V.z -> 0 (grazing views). Offset-limited (L532-546) drops
+// The offset grows without bound as V.z -> 0 (grazing views). Offset-limited (L536-546) drops
 // the division: T_n = T_0 + h_n V.xy, |T_n - T_0| <= 0.5 s.
 vec2 parallax_uv(sampler2D height_map, vec2 t0, vec3 V, float s, bool limited) {
     float h_n = texture(height_map, t0).a * s - 0.5 * s;

@@ -7,7 +7,7 @@
 
 const float kPi = 3.14159265358979;
 
-// Lambert (000_c9f7e5de708ecbb3.txt L881-899, L1008-1011): f_r = c_d / pi. The 1/pi makes the
+// Lambert (000_c9f7e5de708ecbb3.txt L881-898, L1011): f_r = c_d / pi. The 1/pi makes the
 // hemisphere integral of f_r cos(theta) exactly c_d: an albedo of 1 reflects all it receives.
 vec3 brdf_lambert(vec3 albedo) { return albedo / kPi; }
 
@@ -21,7 +21,7 @@ float blinn_phong_normalized(vec3 n, vec3 h, float m) {
 
 // --- Microfacet terms ------------------------------------------------------------------------
 
-// Beckmann distribution as printed in 000_c9f7e5de708ecbb3.txt L1150-1156 (m: RMS slope):
+// Beckmann distribution as printed in 000_c9f7e5de708ecbb3.txt L1163-1173 (m: RMS slope):
 //     D = 1 / (4 m^2 (n.h)^4) * exp(((n.h)^2 - 1) / (m^2 (n.h)^2))
 // With 4 m^2 the projected-area integral  integral D (n.h) d(omega_h)  is pi/4 for every m,
 // not 1 (TECHNIQUES.md pitfall); ndf_beckmann below is the normalised form.
@@ -36,7 +36,7 @@ float ndf_beckmann(float n_dot_h, float m) {
     return exp((c2 - 1.0) / (m * m * c2)) / (kPi * m * m * c2 * c2);
 }
 
-// GGX / Trowbridge-Reitz as written in 002_644d46bdce7e5305.txt L200-215: a = r^2 (r the
+// GGX / Trowbridge-Reitz as written in 002_644d46bdce7e5305.txt L156-165: a = r^2 (r the
 // perceptual roughness), d = (n.h a^2 - n.h) n.h + 1, D = a^2 / (pi d^2).
 float ndf_ggx(float n_dot_h, float roughness) {
     float a = roughness * roughness, a2 = a * a;
@@ -44,13 +44,13 @@ float ndf_ggx(float n_dot_h, float roughness) {
     return a2 / (kPi * d * d);
 }
 
-// Torrance-Sparrow geometric attenuation (000 L1170-1180):
+// Torrance-Sparrow geometric attenuation (000 L1189-1201):
 //     G = min(1, 2 (n.h)(n.v)/(v.h), 2 (n.h)(n.l)/(v.h))
 float g_torrance_sparrow(float n_dot_h, float n_dot_v, float n_dot_l, float v_dot_h) {
     return min(1.0, min(2.0 * n_dot_h * n_dot_v / v_dot_h, 2.0 * n_dot_h * n_dot_l / v_dot_h));
 }
 
-// 002 L230-260: the Smith forms it uses already contain 1/(4 (n.l)(n.v)) — "visibility"
+// 002 L228-250: the Smith forms it uses already contain 1/(4 (n.l)(n.v)) — "visibility"
 // terms V, so f_spec = D F V with no further division (a pitfall TECHNIQUES.md notes).
 // Smith-GGX, exact: V = 1 / (GV.x GV.y), GV = n.vl + sqrt((n.vl - n.vl a2) n.vl + a2).
 float v_smith_ggx(float n_dot_v, float n_dot_l, float roughness) {

@@ -2,7 +2,7 @@
 // points, interpolated with a smooth fade.
 //   value noise:    n(x) = lerp of random values r(i) at the cell corners, weights fade(f)
 //   gradient noise: n(x) = lerp of dot(g(i), x - i) at the corners (zero at every lattice point)
-// fade3(t) = 3t^2 - 2t^3 (C1, L2382 of 002); fade5(t) = 6t^5 - 15t^4 + 10t^3 (C2, Perlin 2002).
+// fade3(t) = 3t^2 - 2t^3 (C1, L2385 of 002); fade5(t) = 6t^5 - 15t^4 + 10t^3 (C2, Perlin 2002).
 #ifndef PASSLAB_NOISE_GLSL
 #define PASSLAB_NOISE_GLSL
 
