@@ -14,10 +14,10 @@
 #define BRDF_PHONG               1  // m                  -      (v.r)^m                    (000 L912-926)
 #define BRDF_BLINN               2  // m                  -      (n.h)^m                    (000 L980-988)
 #define BRDF_BLINN_NORMALIZED    3  // m                  -      (m+8)/(8pi) (n.h)^m        (000 L1008-1011)
-#define BRDF_COOK_TORRANCE_PRINTED 4  // RMS slope m      F0     D_4m^2 F G / (4 nl nv)     (000 L1150-1256)
+#define BRDF_COOK_TORRANCE_PRINTED 4  // RMS slope m      F0     D_4m^2 F G / (4 nl nv)     (000 D L1163-1173, G L1189-1201, f L1213-1217)
 #define BRDF_COOK_TORRANCE       5  // RMS slope m        F0     D_pi m^2 F G / (4 nl nv)
-#define BRDF_GGX_SMITH           6  // roughness r        F0     D_GGX F V_Smith            (002 L200-260)
-#define BRDF_GGX_SCHLICK         7  // roughness r        F0     D_GGX F V_Schlick-GGX
+#define BRDF_GGX_SMITH           6  // roughness r        F0     D_GGX F V_Smith            (002 D L157-166, V L231-239)
+#define BRDF_GGX_SCHLICK         7  // roughness r        F0     D_GGX F V_Schlick-GGX      (002 V L243-249)
 #define BRDF_OREN_NAYAR          8  // sigma (radians)    -      Oren-Nayar 1994            (000 L1273-1294)
 #define BRDF_ASHIKHMIN_SHIRLEY   9  // e_u (along t)      e_v    specular lobe, R_s = 1     (000 L1258-1265)
 // Not a BRDF, kept to show what the tests catch: the printed Phong shader's specular as
@@ -41,7 +41,7 @@ float brdf_catalog(int kind, vec3 l, vec3 v, vec2 p) {
         return D * fresnel_schlick(vh, p.y) * G / (4.0 * nv * nl);
     }
     if (kind == BRDF_GGX_SMITH || kind == BRDF_GGX_SCHLICK) {
-        // 002 L230-260: the visibility terms already hold 1/(4 n.l n.v): f = D F V.
+        // 002 L231-249: the visibility terms already hold 1/(4 n.l n.v): f = D F V.
         float V = kind == BRDF_GGX_SMITH ? v_smith_ggx(nv, nl, p.x) : v_schlick_ggx(nv, nl, p.x);
         return ndf_ggx(nh, p.x) * fresnel_schlick(vh, p.y) * V;
     }
