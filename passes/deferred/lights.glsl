@@ -39,4 +39,7 @@ vec3 shade_point_light(PointLight l, vec3 p, vec3 n, vec3 v, vec3 albedo, float 
     float spec = ks * (m + 8.0) / 25.1327 * pow(max(dot(n, h), 0.0), m);  // (m + 8) / (8 pi)
     return (albedo / 3.14159265 + spec) * l.color * ndl * light_falloff(d, l.radius) * 3.14159265;
 }
+// Debug colour of a light-list length x = count / 64: blue (0) to red (1), clamped; the
+// show = count views of deferred/clustered-forward and deferred/forward-many-lights.
+vec3 light_count_heat(float x) { return mix(vec3(0.1, 0.2, 0.8), vec3(1.0, 0.15, 0.05), clamp(x, 0.0, 1.0)); }
 #endif

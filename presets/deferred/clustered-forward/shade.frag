@@ -21,8 +21,6 @@ layout(std430) readonly buffer cluster_lights { uint slots[]; };
 const float kShininess = 32.0;
 const float kPaneAlpha = 0.35;
 
-vec3 heat(float x) { return mix(vec3(0.1, 0.2, 0.8), vec3(1.0, 0.15, 0.05), clamp(x, 0.0, 1.0)); }
-
 void main() {
 #ifdef PANE
     float alpha = kPaneAlpha;
@@ -49,7 +47,7 @@ void main() {
             missing.x += listed ? 0.0 : 1.0;
         }
     }
-    if (params.show == SHOW_COUNT) col = count == 0u ? vec3(0.0) : heat(float(count) / 64.0);
+    if (params.show == SHOW_COUNT) col = count == 0u ? vec3(0.0) : light_count_heat(float(count) / 64.0);
     if (params.show == SHOW_SLICES) col = (0.35 + 0.65 * fract(float(cc.z) * 0.618034 + vec3(0.0, 0.33, 0.67))) * (0.3 + 0.7 * max(dot(n, normalize(vec3(0.3, 1.0, 0.2))), 0.0));
 #endif
     lit = vec4(col, alpha);

@@ -27,8 +27,6 @@ vec3 one_light(int i, vec3 n, vec3 v) {
     return shade_point_light(point_light(i, frame.time), v_world, n, v, v_material.rgb, v_material.a, kShininess);
 }
 
-vec3 heat(float x) { return mix(vec3(0.1, 0.2, 0.8), vec3(1.0, 0.15, 0.05), clamp(x, 0.0, 1.0)); }
-
 void main() {
     vec3 n = normalize(v_normal), v = normalize(frame.camera_pos.xyz - v_world);
     uint base = uint(v_object * kListWords), count = list_words[base];
@@ -64,7 +62,7 @@ void main() {
         missing += listed ? 0.0 : 1.0;
     }
 #endif
-    if (params.show == SHOW_COUNT) c = heat(float(count) / 64.0);
+    if (params.show == SHOW_COUNT) c = light_count_heat(float(count) / 64.0);
     lit = vec4(c, 1.0);
 #endif
 }
