@@ -27,7 +27,7 @@ const float kBlackmanHarris = 2.29;
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy), last = ivec2(frame.resolution.xy) - 1;
     vec2 j = taa_jitter(frame.index, params.jitter);
-    // TODO 2: reprojection (000 L3495-3505): where was the surface now under this pixel one
+    // TODO 2: reprojection (000 L3488-3505): where was the surface now under this pixel one
     // frame ago? The motion texture holds, per pixel, the uv it moved by since last frame.
     vec2 prev_uv = uv;
     float prev_id = texture(id_prev, prev_uv).r;
@@ -40,7 +40,7 @@ void main() {
             id_nearby = id_nearby || texelFetch(id, q, 0).r == prev_id;
             vec3 c = texelFetch(cur, q, 0).rgb;
             lo = min(lo, c), hi = max(hi, c);
-            // TODO 1: reconstruction weight (000 L3476-3485). The neighbour (x, y) took its sample
+            // TODO 1: reconstruction weight (000 L3475-3486). The neighbour (x, y) took its sample
             // at its own centre moved by the jitter j (in pixels, the same for every pixel). With
             // d the offset from OUR centre to that sample, the Gaussian fit to Blackman-Harris is
             //     W(d) = exp(-2.29 |d|^2)          (kBlackmanHarris = 2.29)
@@ -58,7 +58,7 @@ void main() {
     }
     vec3 history = texture(taa_prev, prev_uv).rgb;
     // TODO 3: with params.rectify, clip the history to this frame's 3x3 neighbourhood [lo, hi]
-    // (000 L3526-3532), then blend by the exponential moving average of 000 L3471:
+    // (000 L3528-3532), then blend by the exponential moving average of 000 L3471:
     //     s_t = alpha x_t + (1 - alpha) s_(t-1),   x_t = current, s_(t-1) = history,
     //     alpha = params.alpha (the NEW frame's weight: 0.1 by default)
     taa = vec4(current, 1.0);
