@@ -15,6 +15,11 @@ void main() {
     // The white furnace: radiance 1 in every direction.
     if (params.env == ENV_WHITE) env = vec4(1.0);
 #endif
+#ifdef ENV_DIRECTIONS
+    // The direction each texel stands for, as its colour (a float cube): a lookup along a texel's
+    // own direction must return it, which tests the face orientation against the hardware.
+    if (params.env == ENV_DIRECTIONS) env = vec4(d, 1.0);
+#endif
 #ifdef ENV_POINT
     // One bright texel (face +X, texel (3, 4)), black elsewhere: a point-like light.
     if (params.env == ENV_POINT) env = vec4(vec3(pl_iteration == 0 && ivec2(gl_FragCoord.xy) == ivec2(3, 4) ? 100.0 : 0.0), 1.0);
