@@ -14,7 +14,7 @@ const float kGauss5[5] = float[](1.0 / 16.0, 4.0 / 16.0, 6.0 / 16.0, 4.0 / 16.0,
 // Five discrete taps at integer texel offsets -2..2. `texel` = dir / size: one texel along the
 // pass's direction (x in blur_x, y in blur_y).
 vec4 gauss5_discrete(sampler2D s, vec2 uv, vec2 texel) {
-    // TODO 1: the 5x1 filter (000_c9f7e5de708ecbb3.txt L3041-3044): the weighted sum of the five
+    // TODO 1: the 5x1 filter (000_c9f7e5de708ecbb3.txt L3040-3044): the weighted sum of the five
     // texels at offsets -2, -1, 0, 1, 2 texels from uv, weights kGauss5. Run twice (along x,
     // then along y) it must equal the direct 5x5 product kernel w(i) w(j) of direct.frag.
     return texture(s, uv);
