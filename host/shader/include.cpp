@@ -64,7 +64,18 @@ struct Expander {
             std::string name = m[1];
             int col = static_cast<int>(line.find('#')) + 1;
             fs::path found;
-            std::vector<fs::path> tried = {file.parent_path() / name};
+            std::vector<fs::path> tried;
+            // Next to the includer first. But when the includer lies in one of the search dirs,
+            // the same relative path in an earlier dir (an exercise overlay before the preset,
+            // the preset before passes/) shadows it, as top-level shader files are shadowed.
+            const fs::path beside = file.parent_path() / name;
+            for (size_t k = 0; k < dirs.size(); ++k) {
+                auto rel = fs::weakly_canonical(beside).lexically_relative(fs::weakly_canonical(dirs[k]));
+                if (rel.empty() || *rel.begin() == "..") continue;
+                for (size_t j = 0; j < k; ++j) tried.push_back(dirs[j] / rel);
+                break;  // the first dir that holds the includer decides
+            }
+            tried.push_back(beside);
             for (const auto& d : dirs)
                 if (fs::weakly_canonical(d) != fs::weakly_canonical(file.parent_path())) tried.push_back(d / name);
             std::error_code ec;
