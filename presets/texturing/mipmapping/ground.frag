@@ -10,7 +10,16 @@ uniform sampler2D checker_bilinear;
 uniform sampler2D checker_trilinear;
 void main() {
     vec3 c;
-    if (params.filtering == FILTERING_NEAREST) c = texture(checker_nearest, v_uv).rgb;
+    if (params.filtering == FILTERING_COMPARE) {
+        // Split view, thirds of the screen: nearest | bilinear | trilinear. All three are sampled
+        // in uniform control flow (the sampler's derivatives need the whole 2x2 quad), then one
+        // is kept; a thin line marks each border.
+        vec3 n = texture(checker_nearest, v_uv).rgb, b = texture(checker_bilinear, v_uv).rgb;
+        vec3 t = texture(checker_trilinear, v_uv).rgb;
+        float x = gl_FragCoord.x / frame.resolution.x;
+        c = x < 1.0 / 3.0 ? n : x < 2.0 / 3.0 ? b : t;
+        if (abs(x - 1.0 / 3.0) < 0.0015 || abs(x - 2.0 / 3.0) < 0.0015) c = vec3(1.0, 0.8, 0.2);
+    } else if (params.filtering == FILTERING_NEAREST) c = texture(checker_nearest, v_uv).rgb;
     else if (params.filtering == FILTERING_BILINEAR) c = texture(checker_bilinear, v_uv).rgb;
     else if (params.filtering == FILTERING_TRILINEAR) c = texture(checker_trilinear, v_uv).rgb;
     else {
