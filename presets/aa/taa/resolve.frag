@@ -34,8 +34,11 @@ void main() {
             id_nearby = id_nearby || texelFetch(id, q, 0).r == prev_id;
             vec3 c = texelFetch(cur, q, 0).rgb;
             lo = min(lo, c), hi = max(hi, c);
-            // This neighbour's sample sits at its centre + the jitter: its distance to our centre.
-            vec2 d = vec2(x, y) + j;
+            // Where this neighbour's sample lies, seen from our centre. aa/shapes.vert moves the
+            // geometry by +j pixels, so a pixel centre sees the scene point at centre - j
+            // (TECHNIQUES' pitfall: the jitter's sign; it used to be + j here, which reconstructs
+            // from samples mirrored through the centre: blackman-harris-converges 0.569, not 0.351).
+            vec2 d = vec2(x, y) - j;
             float w = params.reconstruct == RECONSTRUCT_BOX ? float(x == 0 && y == 0) : exp(-kBlackmanHarris * dot(d, d));
             sum += w * c, wsum += w;
         }
