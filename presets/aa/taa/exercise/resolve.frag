@@ -40,9 +40,10 @@ void main() {
             id_nearby = id_nearby || texelFetch(id, q, 0).r == prev_id;
             vec3 c = texelFetch(cur, q, 0).rgb;
             lo = min(lo, c), hi = max(hi, c);
-            // TODO 1: reconstruction weight (000 L3475-3486). The neighbour (x, y) took its sample
-            // at its own centre moved by the jitter j (in pixels, the same for every pixel). With
-            // d the offset from OUR centre to that sample, the Gaussian fit to Blackman-Harris is
+            // TODO 1: reconstruction weight (000 L3475-3486). aa/shapes.vert moves the geometry by
+            // the jitter j (in pixels, the same for every pixel): which scene point does the
+            // neighbour (x, y)'s sample show, relative to OUR centre? With d that offset, the
+            // Gaussian fit to Blackman-Harris is
             //     W(d) = exp(-2.29 |d|^2)          (kBlackmanHarris = 2.29)
             // With params.reconstruct == RECONSTRUCT_BOX only the pixel's own sample counts
             // (weight 1 for x = y = 0, else 0).
