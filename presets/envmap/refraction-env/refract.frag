@@ -11,6 +11,7 @@
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;
 layout(location = 0) out vec4 hdr;
+layout(location = 1) out float tir;  // 1 where the green channel's ray is totally reflected (tests)
 uniform samplerCube env;
 
 void main() {
@@ -26,6 +27,7 @@ void main() {
         float F = dot(T, T) == 0.0 ? 1.0 : fresnel_exact(cos_i, m1, m2);
         vec3 t = dot(T, T) == 0.0 ? vec3(0.0) : texture(env, T).rgb;
         c[ch] = mix(t[ch], texture(env, R)[ch], F);
+        if (ch == 1) tir = dot(T, T) == 0.0 ? 1.0 : 0.0;
     }
     hdr = vec4(c, 1.0);
 }
