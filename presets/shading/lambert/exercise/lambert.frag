@@ -1,5 +1,5 @@
 #version 450
-// EXERCISE — Lambert shading (000_c9f7e5de708ecbb3.txt L1008-1011) and the white furnace.
+// EXERCISE — Lambert shading (000_c9f7e5de708ecbb3.txt L893-898) and the white furnace.
 // Fill in the two TODO blocks, then check your work against the reference:
 //     passlab run   shading/lambert --exercise presets/shading/lambert/exercise   (live, hot reload)
 //     passlab grade shading/lambert --exercise presets/shading/lambert/exercise   (the test cases)
@@ -30,7 +30,7 @@ void main() {
         // angle. Scale sum by it (what is the solid angle of a hemisphere?).
         lo = sum;
     } else {
-        // TODO 3: one directional light of irradiance params.irradiance from params.light_dir:
+        // TODO 3: one directional light of irradiance params.irradiance from params.light_dir (L893-898):
         //     L_o = c_d * max(n.l, 0) * I_L     (written through the BRDF: pi * f_r = c_d)
         // and remember that light_dir is not normalised.
     }
