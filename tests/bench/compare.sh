@@ -19,17 +19,29 @@ mkdir "$tmp/fragment" "$tmp/compute"
 "$passlab" check tests/bench/fbm-only --spirv "$tmp/fragment" --no-cache >/dev/null
 "$passlab" check tests/bench/fbm-compute --spirv "$tmp/compute" --no-cache >/dev/null
 median() { awk '{for (i = 1; i <= NF; ++i) if ($i == "median") print $(i + 1)}' | tr -d ','; }
+# This VM's speed drifts by 10-30% over seconds, so one host run against one floor run can
+# read anywhere from 0.75 to 1.2. Alternate host and floor ROUNDS times (default 5) and report
+# the median of each and the median of the per-round ratios.
+rounds=${ROUNDS:-5}
+med() { sort -n | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
 for variant in fragment compute; do
   for size in $sizes; do
     w=${size%x*} h=${size#*x}
-    if [ $variant = fragment ]; then
-      host=$("$passlab" bench tests/bench/fbm-only --size "$size" --frames "$frames" --warmup 5 2>/dev/null | awk '/^frame/ {print $6}')
-      base=$("$floor" "$tmp/fragment/fbm.vertex.spv" "$tmp/fragment/fbm.fragment.spv" "$w" "$h" $((frames + 5)) | median)
-    else
-      host=$("$passlab" bench tests/bench/fbm-compute --size "$size" --frames "$frames" --warmup 5 2>/dev/null | awk '/^frame/ {print $6}')
-      base=$("$floor" --compute "$tmp/compute/fbm.compute.spv" "$w" "$h" $((frames + 5)) | median)
-    fi
-    ratio=$(awk -v f="$base" -v h="$host" 'BEGIN { printf "%.3f", f / h }')
-    echo "fbm $variant $size: host median $host ms, floor median $base ms, throughput host/floor $ratio"
+    : > "$tmp/h" ; : > "$tmp/f"; : > "$tmp/r"
+    r=0
+    while [ $r -lt "$rounds" ]; do
+      if [ $variant = fragment ]; then
+        host=$("$passlab" bench tests/bench/fbm-only --size "$size" --frames "$frames" --warmup 5 2>/dev/null | awk '/^frame/ {print $6}')
+        base=$("$floor" "$tmp/fragment/fbm.vertex.spv" "$tmp/fragment/fbm.fragment.spv" "$w" "$h" $((frames + 5)) | median)
+      else
+        host=$("$passlab" bench tests/bench/fbm-compute --size "$size" --frames "$frames" --warmup 5 2>/dev/null | awk '/^frame/ {print $6}')
+        base=$("$floor" --compute "$tmp/compute/fbm.compute.spv" "$w" "$h" $((frames + 5)) | median)
+      fi
+      echo "$host" >> "$tmp/h"; echo "$base" >> "$tmp/f"
+      awk -v f="$base" -v h="$host" 'BEGIN { printf "%.4f\n", f / h }' >> "$tmp/r"
+      r=$((r + 1))
+    done
+    range=$(sort -n "$tmp/r" | awk 'NR == 1 {lo = $1} {hi = $1} END {printf "%.3f-%.3f", lo, hi}')
+    echo "fbm $variant $size: host median $(med < "$tmp/h") ms, floor median $(med < "$tmp/f") ms, throughput host/floor $(med < "$tmp/r") (rounds $rounds, range $range)"
   done
 done
