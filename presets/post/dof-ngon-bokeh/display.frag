@@ -1,9 +1,10 @@
 #version 450
 // Exposure + Hejl (display-encoded, to a UNORM target) of the gather (composited with the
-// sharp input at half resolution, below); or the blur radius (red, full at 16
+// sharp input at half resolution: composite.glsl); or the blur radius (red, full at 16
 // px); or the tap pattern (each tap of the largest grid a dot on the unit disc / n-gon).
 #include "post/tonemap.glsl"
 #include "bokeh_taps.glsl"
+#include "composite.glsl"
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 ldr;
 uniform sampler2D color;
@@ -11,12 +12,9 @@ uniform sampler2D result;
 uniform sampler2D blur;
 uniform sampler2D taps;
 void main() {
-    vec4 sharp = textureLod(color, uv, 0.0), blurred = texture(result, uv);
-    // resolution = half: the gather is view/2 (upsampled bilinearly here); where the blur is
-    // under kSharpBelow px the 2x2 box of the half-res source would soften an in-focus surface,
-    // so the full-res input is shown there, the gather from kSharpBelow + 1 px on (linear between).
-    const float kSharpBelow = 1.0;
-    if (params.resolution == RESOLUTION_HALF) blurred = mix(sharp, blurred, clamp(texture(blur, uv).x - kSharpBelow, 0.0, 1.0));
+    // resolution = half: the gather composited with the sharp input below 1-2 px of blur
+    // (composite.glsl; composite_check.frag tests it).
+    vec4 sharp = textureLod(color, uv, 0.0), blurred = dof_composite(color, result, blur, uv);
     vec3 c = tonemap_hejl((params.show == SHOW_SHARP || (params.split && uv.x < 0.5) ? sharp : blurred).rgb * params.exposure);
     if (params.show == SHOW_BLUR) c = vec3(texture(blur, uv).x / 16.0, 0.0, 0.0);
     if (params.show == SHOW_TAPS) {
