@@ -14,9 +14,11 @@ layout(location = 4) in vec3 v_n;
 layout(location = 0) out vec4 hdr;
 uniform sampler2D nmap;
 uniform sampler2D nmap_flat;
+uniform sampler2D nmap_ramp;
 void main() {
     mat3 tbn = mat3(normalize(v_t), normalize(v_b), normalize(v_n));
-    vec4 texel = params.mode == MODE_FLAT_MAP ? texture(nmap_flat, v_uv) : texture(nmap, v_uv);
+    vec4 texel = params.mode == MODE_FLAT_MAP ? texture(nmap_flat, v_uv)
+               : params.mode == MODE_RAMP_MAP ? texture(nmap_ramp, v_uv) : texture(nmap, v_uv);
     vec3 n = params.mode == MODE_GEOMETRIC ? normalize(v_n) : normalize(tbn * (texel.xyz * 2.0 - 1.0));
     vec3 l = normalize(params.light_dir), v = normalize(frame.camera_pos.xyz - v_world);
     const float kSpecular = 0.35;   // highlight weight

@@ -17,8 +17,10 @@ layout(location = 4) in vec3 v_n;
 layout(location = 0) out vec4 hdr;
 uniform sampler2D nmap;
 uniform sampler2D nmap_flat;
+uniform sampler2D nmap_ramp;
 void main() {
-    vec4 texel = params.mode == MODE_FLAT_MAP ? texture(nmap_flat, v_uv) : texture(nmap, v_uv);
+    vec4 texel = params.mode == MODE_FLAT_MAP ? texture(nmap_flat, v_uv)
+               : params.mode == MODE_RAMP_MAP ? texture(nmap_ramp, v_uv) : texture(nmap, v_uv);
     // TODO 1: decode the texel's RGB to the tangent-space normal n'. The map is "saved as range
     // compressed bitmap ([-1..1] mapped to [0..1])" (001_fe43b953f362fae7.txt L475): undo that
     // mapping. (A flat map stores (0.5, 0.5, 1), which must decode to n' = (0, 0, 1).)
