@@ -8,6 +8,7 @@
 //
 // Never overwrites: DEST must not exist (the host writes user files only where asked).
 #include "verbs.hpp"
+#include "util/paths.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -28,12 +29,6 @@ Error env_error(std::string msg) {
     Error e = make_error(std::move(msg));
     e.code = ExitCode::environment;
     return e;
-}
-
-// True when `p` lies inside `dir` (both made absolute and normalised first).
-bool is_inside(const fs::path& p, const fs::path& dir) {
-    auto rel = fs::weakly_canonical(p).lexically_relative(fs::weakly_canonical(dir));
-    return !rel.empty() && *rel.begin() != "..";
 }
 
 } // namespace
@@ -57,7 +52,7 @@ int new_preset(const NewOptions& o, const CommonOptions& c) {
     auto built = exec::build_graph(*toml, bo);
     if (!built) return report(built.error());
 
-    if (is_inside(dest, src))
+    if (path_within(dest, src))
         return report(usage_error("passlab new: '" + dest.string() + "' lies inside the source preset " +
                                   src.string()));
 
@@ -86,8 +81,9 @@ int new_preset(const NewOptions& o, const CommonOptions& c) {
         const fs::path lib = exec::passes_dir();
         int shadowed = 0;
         for (const auto& dep : built->dependencies) {
-            if (!is_inside(dep, lib)) continue;
-            const auto rel = fs::weakly_canonical(dep).lexically_relative(fs::weakly_canonical(lib));
+            const auto within = path_within(dep, lib);
+            if (!within) continue;
+            const fs::path& rel = *within;
             fs::create_directories((dest / rel).parent_path(), ec);
             if (!ec) fs::copy_file(dep, dest / rel, fs::copy_options::skip_existing, ec);
             if (ec) return report(env_error("passlab new: copying " + dep.string() + " failed: " + ec.message()));

@@ -245,8 +245,9 @@ Status Executor::record_frame(VkCommandBuffer cb, const FrameInput&) {
             vkCmdFillBuffer(cb, gb.phys[static_cast<size_t>(frame_parity_)]->buffer.buffer, 0, VK_WHOLE_SIZE,
                             *gb.desc->clear);
 
-    // Passes with `enabled = "expr"` follow the current param values (the panel changes them).
-    const graph::SizeEnv env = size_env(g.desc, g.view);
+    // Passes with `enabled = "expr"` follow the current param values (the panel changes them);
+    // the environment is built only in frames that have such a pass.
+    std::optional<graph::SizeEnv> env;
     for (size_t i : g.order) {
         const CompiledPass& cp = g.passes[i];
         ctx_.set_label("pass '" + cp.desc->name + "'");
@@ -254,7 +255,8 @@ Status Executor::record_frame(VkCommandBuffer cb, const FrameInput&) {
             vkCmdWriteTimestamp2(cb, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, queries_, static_cast<uint32_t>(2 * i));
         bool on = cp.desc->enabled;
         if (on && !cp.desc->enabled_when.empty()) {
-            auto v = graph::eval_scalar(cp.desc->enabled_when, env);
+            if (!env) env = size_env(g.desc, g.view);
+            auto v = graph::eval_scalar(cp.desc->enabled_when, *env);
             on = v && *v != 0;  // evaluated at build time too, so an error here cannot happen
         }
         const bool skip = cp.desc->bake && !run_baked_;  // baked: its images still hold the result

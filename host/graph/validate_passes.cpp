@@ -257,12 +257,14 @@ struct PassChecker {
                 if ((fs && fs->compressed()) || (fd && fd->compressed()))
                     return err("a block-compressed image is filled from a buffer of blocks: copy from a buffer", at("dst"));
             }
-            for (const std::string* n : {&p.src, &p.dst}) {
-                const ImageDesc* d = g.find_image(*n);
-                if (!d || (!src_buffer && !dst_buffer)) continue;
-                if (base(d)->samples > 1) return err("a multisampled image cannot be copied to or from a buffer", at(n == &p.src ? "src" : "dst"), *n);
+            // The image side of a buffer <-> image copy: single-sampled colour only.
+            if (src_buffer != dst_buffer) {
+                const std::string& n = src_buffer ? p.dst : p.src;
+                const char* key = src_buffer ? "dst" : "src";
+                const ImageDesc* d = g.find_image(n);
+                if (base(d)->samples > 1) return err("a multisampled image cannot be copied to or from a buffer", at(key), n);
                 const vk::FormatInfo* f = format(d);
-                if (f && f->is_depth) return err("a depth image cannot be copied to or from a buffer here", at(n == &p.src ? "src" : "dst"), *n);
+                if (f && f->is_depth) return err("a depth image cannot be copied to or from a buffer here", at(key), n);
             }
             break;
         }

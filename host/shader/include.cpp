@@ -2,6 +2,7 @@
 // include_dirs), #line directives so errors map back to real files, and cycle detection
 // (glslang on its own never returns on a recursive include).
 #include "shader/include.hpp"
+#include "util/paths.hpp"
 
 #include <fstream>
 #include <regex>
@@ -70,9 +71,9 @@ struct Expander {
             // the preset before passes/) shadows it, as top-level shader files are shadowed.
             const fs::path beside = file.parent_path() / name;
             for (size_t k = 0; k < dirs.size(); ++k) {
-                auto rel = fs::weakly_canonical(beside).lexically_relative(fs::weakly_canonical(dirs[k]));
-                if (rel.empty() || *rel.begin() == "..") continue;
-                for (size_t j = 0; j < k; ++j) tried.push_back(dirs[j] / rel);
+                auto rel = path_within(beside, dirs[k]);
+                if (!rel) continue;
+                for (size_t j = 0; j < k; ++j) tried.push_back(dirs[j] / *rel);
                 break;  // the first dir that holds the includer decides
             }
             tried.push_back(beside);

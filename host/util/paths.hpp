@@ -1,0 +1,13 @@
+// Path relations the host needs in more than one place (include shadowing, `passlab new`).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+namespace pl {
+
+// `p` relative to `dir` when `p` lies inside `dir` (both made canonical first, so links and
+// "..": never match by spelling alone); nullopt otherwise, and for `dir` itself.
+std::optional<std::filesystem::path> path_within(const std::filesystem::path& p, const std::filesystem::path& dir);
+
+} // namespace pl
