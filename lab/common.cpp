@@ -1,9 +1,9 @@
 #include "verbs.hpp"
 
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <set>
 
 namespace pl::lab {
 
@@ -78,12 +78,13 @@ void describe_exercise(const CommonOptions& c, const exec::CompiledGraph& g) {
     if (c.exercise.empty()) return;
     namespace fs = std::filesystem;
     const fs::path dir = fs::weakly_canonical(fs::absolute(c.exercise));
+    std::set<fs::path> read;  // every file the build read, canonical once
+    for (const auto& d : g.dependencies) read.insert(fs::weakly_canonical(d));
     std::error_code ec;
     for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
         if (!it->is_regular_file()) continue;
         const fs::path f = fs::weakly_canonical(it->path());
-        bool used = std::any_of(g.dependencies.begin(), g.dependencies.end(),
-                                [&](const fs::path& d) { return fs::weakly_canonical(d) == f; });
+        bool used = read.count(f) > 0;
         const std::string rel = f.lexically_relative(dir).string();
         if (used) std::fprintf(stderr, "exercise: using your %s\n", rel.c_str());
         else if (f.extension() != ".md" && f.extension() != ".txt")
