@@ -3,9 +3,11 @@
 #include "exec/barriers.hpp"
 #include "exec/bind.hpp"
 #include "exec/frame_block.hpp"
+#include "exec/limits.hpp"
 #include "exec/texels.hpp"
 #include "scene/camera.hpp"
 #include "vk/check.hpp"
+#include "vk/clear_value.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -55,6 +57,9 @@ Result<std::unique_ptr<Executor>> Executor::create(vk::Context& ctx, CompiledGra
     auto res = create_resources(ctx, g);
     if (!res) return res.error();
     ex->res_ = std::move(res.value());
+    std::map<std::string, VkDeviceSize> buffer_sizes;
+    for (const auto& [name, gb] : ex->res_.buffers) buffer_sizes[name] = gb.phys[0]->buffer.size;
+    if (auto s = check_binding_limits(ctx.properties().limits, ctx.properties().deviceName, g, buffer_sizes); !s) return s.error();
 
     std::map<VkDescriptorType, uint32_t> counts;
     uint32_t max_sets = 0;
@@ -210,15 +215,16 @@ Status Executor::record_frame(VkCommandBuffer cb, const FrameInput&) {
     BarrierBatch batch;
     struct ClearOp {
         PhysImage* img;
-        std::array<float, 4> color;
+        const vk::FormatInfo* format;
+        std::array<double, 4> color;
     };
     std::vector<ClearOp> clears;
     for (auto& [name, gi] : res_.images) {
         if (!gi.desc->alias.empty()) continue;
-        std::array<float, 4> value = gi.desc->clear.value_or(std::array<float, 4>{0, 0, 0, 0});
-        if (gi.desc->clear) clears.push_back({gi.phys[static_cast<size_t>(frame_parity_)].get(), value});
+        std::array<double, 4> value = gi.desc->clear.value_or(std::array<double, 4>{0, 0, 0, 0});
+        if (gi.desc->clear) clears.push_back({gi.phys[static_cast<size_t>(frame_parity_)].get(), gi.format, value});
         if (gi.history && frames_rendered_ == 0)
-            clears.push_back({gi.phys[static_cast<size_t>(1 - frame_parity_)].get(), value});
+            clears.push_back({gi.phys[static_cast<size_t>(1 - frame_parity_)].get(), gi.format, value});
     }
     for (auto& c : clears) require(batch, *c.img, usage_of(Access::transfer_dst, 0), true);
     std::vector<PhysBuffer*> fills;
@@ -232,11 +238,10 @@ Status Executor::record_frame(VkCommandBuffer cb, const FrameInput&) {
     for (auto& c : clears) {
         auto range = c.img->image.full_range();
         if (c.img->image.aspect() & VK_IMAGE_ASPECT_DEPTH_BIT) {
-            VkClearDepthStencilValue v{c.color[0], 0};
+            VkClearDepthStencilValue v{static_cast<float>(c.color[0]), 0};
             vkCmdClearDepthStencilImage(cb, c.img->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1, &range);
         } else {
-            VkClearColorValue v;
-            std::memcpy(v.float32, c.color.data(), sizeof v.float32);
+            VkClearColorValue v = vk::clear_color(*c.format, c.color);
             vkCmdClearColorImage(cb, c.img->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1, &range);
         }
     }

@@ -6,6 +6,7 @@
 #include "exec/frame_block.hpp"
 #include "exec/texels.hpp"
 #include "vk/check.hpp"
+#include "vk/clear_value.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -156,6 +157,7 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
     }
     if (pd.kind == graph::PassKind::clear) {
         if (res_.buffers.count(pd.image)) {
+            // Validated as an integer in 0..4294967295 (vk::fill_value_problem), so exact.
             uint32_t v = pd.clear.color ? static_cast<uint32_t>((*pd.clear.color)[0]) : 0u;
             vkCmdFillBuffer(cb, phys_buffer(pd.image, false)->buffer.buffer, 0, VK_WHOLE_SIZE, v);
             return ok_status();
@@ -166,8 +168,7 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
             VkClearDepthStencilValue v{pd.clear.depth.value_or(1.0f), pd.clear.stencil.value_or(0)};
             vkCmdClearDepthStencilImage(cb, p->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1, &range);
         } else {
-            VkClearColorValue v{};
-            if (pd.clear.color) std::memcpy(v.float32, pd.clear.color->data(), sizeof v.float32);
+            VkClearColorValue v = vk::clear_color(*image(pd.image).format, pd.clear.color.value_or(std::array<double, 4>{}));
             vkCmdClearColorImage(cb, p->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1, &range);
         }
         return ok_status();
@@ -333,14 +334,7 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
                                     .imageLayout = p->state.layout,
                                     .loadOp = pd.clear.color ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD,
                                     .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
-        if (pd.clear.color) {
-            const GraphImage& gi = image(t.image);
-            if (gi.format->is_integer) {
-                for (int c = 0; c < 4; ++c) a.clearValue.color.uint32[c] = static_cast<uint32_t>((*pd.clear.color)[static_cast<size_t>(c)]);
-            } else {
-                std::memcpy(a.clearValue.color.float32, pd.clear.color->data(), 16);
-            }
-        }
+        if (pd.clear.color) a.clearValue.color = vk::clear_color(*image(t.image).format, *pd.clear.color);
         if (!t.resolve.empty()) {
             PhysImage* r = phys_image(t.resolve, false);
             a.resolveMode = image(t.image).format->is_integer ? VK_RESOLVE_MODE_SAMPLE_ZERO_BIT : VK_RESOLVE_MODE_AVERAGE_BIT;

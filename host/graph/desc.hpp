@@ -68,7 +68,9 @@ struct ImageDesc {
     bool srgb = false;     // file/generator colour is sRGB-encoded
     std::string generator;  // checker | uv-grid | value-noise | gradient-noise | constant
     std::map<std::string, std::vector<double>> generator_args;  // e.g. cells=[8], color_a=[...]
-    std::optional<std::array<float, 4>> clear;  // cleared at the start of every frame
+    // Cleared at the start of every frame. Doubles, so that integer formats clear exactly (a
+    // float holds 0xffffffff as 4294967296); vk/clear_value.hpp picks the union member.
+    std::optional<std::array<double, 4>> clear;
     SamplerDesc sampler;
     KeyLocs keys;  // value locations: "alias", "file", "generator", "samples", "mips", ...
 };
@@ -153,7 +155,7 @@ struct StencilDesc {
 
 // Per-pass clears; an absent value means "load previous contents".
 struct ClearDesc {
-    std::optional<std::array<float, 4>> color;
+    std::optional<std::array<double, 4>> color;  // doubles: exact 32-bit integer clears
     std::optional<float> depth;
     std::optional<uint32_t> stencil;
 };

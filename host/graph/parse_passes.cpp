@@ -177,7 +177,7 @@ Status parse_clear(const toml::table& ct, TableReader& r, ClearDesc& c, KeyLocs&
     TableReader cr(ct, r.file(), r.what() + " clear", &locs, "clear.");
     std::vector<double> col;
     if (auto s = cr.numbers("color", col, 4, 4); !s) return s;
-    if (!col.empty()) c.color = std::array<float, 4>{float(col[0]), float(col[1]), float(col[2]), float(col[3])};
+    if (!col.empty()) c.color = std::array<double, 4>{col[0], col[1], col[2], col[3]};
     if (cr.has("depth")) {
         float d = 1.0f;
         if (auto s = cr.floats("depth", d); !s) return s;

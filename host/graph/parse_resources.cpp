@@ -153,7 +153,7 @@ Status parse_image(const toml::table& it, const std::string& file, ImageDesc& d)
     if (auto s = parse_generator_args(r, d.name, d); !s) return s;
     std::vector<double> clear;
     if (auto s = r.numbers("clear", clear, 4, 4); !s) return s;
-    if (!clear.empty()) d.clear = std::array<float, 4>{float(clear[0]), float(clear[1]), float(clear[2]), float(clear[3])};
+    if (!clear.empty()) d.clear = std::array<double, 4>{clear[0], clear[1], clear[2], clear[3]};
     if (auto sm = r.table("sampler"); !sm) return sm.error();
     else if (*sm) {
         if (auto s = parse_sampler(**sm, file, d.name, d.sampler, d.keys); !s) return s;

@@ -2,6 +2,7 @@
 // validate_sizes.cpp. The first error is returned: later ones are often consequences of it.
 #include "graph/validate_parts.hpp"
 
+#include "vk/clear_value.hpp"
 #include "vk/formats.hpp"
 
 #include <algorithm>
@@ -187,6 +188,8 @@ Status check_images(const GraphDesc& g, const DeclaredNames& n) {
             if (i.history) return err("a block-compressed image cannot be a history image", "history");
             if (i.clear) return err("a block-compressed image cannot be cleared", "clear");
         }
+        if (ef && i.clear && !ef->is_depth)
+            if (std::string why = vk::clear_value_problem(*ef, *i.clear); !why.empty()) return err(why, "clear");
         if (ef && ef->is_depth) {
             if (i.kind == ImageKind::tex3d) return err("a 3D image cannot have a depth format", "format");
             if (!i.file.empty() || !i.generator.empty()) return err("a file or generator image cannot have a depth format", "format");

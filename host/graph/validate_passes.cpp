@@ -2,6 +2,7 @@
 // images, buffers and meshes, attachment formats and sharing.
 #include "graph/validate_parts.hpp"
 
+#include "vk/clear_value.hpp"
 #include "vk/formats.hpp"
 
 #include <algorithm>
@@ -225,6 +226,11 @@ struct PassChecker {
         bool raster = p.kind == PassKind::fullscreen || p.kind == PassKind::draw;
         if (raster && p.targets.empty() && !p.depth) return err("the pass renders into nothing: add targets = [...] or depth", p.loc);
         if (raster && p.clear.color && p.targets.empty()) return err("clear.color but the pass has no colour targets", at("clear.color"));
+        if (raster && p.clear.color)
+            for (const auto& t : p.targets)  // one clear value for every target: each must take it exactly
+                if (const vk::FormatInfo* f = format(g.find_image(t.image)))
+                    if (std::string why = vk::clear_value_problem(*f, *p.clear.color); !why.empty())
+                        return err("target '" + t.image + "': " + why, at("clear.color"), t.image);
         if (raster && (p.clear.depth || p.clear.stencil) && !p.depth)
             return err("clear.depth / clear.stencil but the pass has no depth attachment", at(p.clear.depth ? "clear.depth" : "clear.stencil"));
         return ok_status();
@@ -277,10 +283,18 @@ struct PassChecker {
             break;
         }
         case PassKind::clear:
-            if (!g.find_buffer(p.image)) {
+            if (g.find_buffer(p.image)) {
+                if (p.clear.color)
+                    if (std::string why = vk::fill_value_problem((*p.clear.color)[0]); !why.empty())
+                        return err("buffer '" + p.image + "': " + why, at("clear.color"), p.image);
+            } else {
                 if (auto s = need_image(p.image, at("image"), "image or buffer"); !s) return s;
-                if (const vk::FormatInfo* f = format(g.find_image(p.image)); f && f->compressed())
+                const vk::FormatInfo* f = format(g.find_image(p.image));
+                if (f && f->compressed())
                     return err("image '" + p.image + "' is block-compressed and cannot be cleared", at("image"), p.image);
+                if (f && !f->is_depth && p.clear.color)
+                    if (std::string why = vk::clear_value_problem(*f, *p.clear.color); !why.empty())
+                        return err("image '" + p.image + "': " + why, at("clear.color"), p.image);
             }
             break;
         default: break;

@@ -123,7 +123,7 @@ TEST(Parse, EveryKey) {
     EXPECT_EQ(g.find_image("vol")->size.literal, (std::vector<int64_t>{16, 16, 8}));
     const ImageDesc* acc = g.find_image("acc");
     EXPECT_TRUE(acc->history);
-    EXPECT_EQ(*acc->clear, (std::array<float, 4>{0, 0, 0, 1}));
+    EXPECT_EQ(*acc->clear, (std::array<double, 4>{0, 0, 0, 1}));
     const ImageDesc* grid = g.find_image("grid");
     EXPECT_EQ(grid->generator, "checker");
     EXPECT_TRUE(grid->srgb);
@@ -218,7 +218,7 @@ TEST(Parse, EveryKey) {
     EXPECT_EQ(p.blend[1].dst_alpha, "zero");
     EXPECT_EQ(p.blend[1].alpha_op, "max");
     EXPECT_EQ(p.blend[1].write_mask, "rgb");
-    EXPECT_EQ(*p.clear.color, (std::array<float, 4>{0, 0, 0, 1}));
+    EXPECT_EQ(*p.clear.color, (std::array<double, 4>{0, 0, 0, 1}));
     EXPECT_EQ(*p.clear.depth, 1.0f);
     EXPECT_EQ(*p.clear.stencil, 7u);
     EXPECT_EQ(p.repeat.literal, (std::vector<int64_t>{6}));
