@@ -102,6 +102,15 @@ int render(const RenderOptions& o, const CommonOptions& c) {
     std::fprintf(stderr, "render: %dx%d, %d frame(s); build %.1f ms, device %.1f ms, setup %.1f ms, frames %.1f ms, write %.1f ms, total %.1f ms\n",
                  g.view[0], g.view[1], o.frames, t_build, t_device, t_setup, t_frames, t_write, ms_since(t0));
     for (const auto& t : (*ex)->timings()) std::fprintf(stderr, "  pass %-20s %8.3f ms GPU\n", t.name.c_str(), t.gpu_ms);
+    // A counter above its buffer's capacity means appends were dropped (or written out of
+    // bounds): the render is wrong, so it fails like a validation message.
+    bool overflow = false;
+    for (const auto& cnt : (*ex)->counters())
+        if (cnt.overflow_frame >= 0) {
+            std::fprintf(stderr, "render: %s\n", exec::overflow_message(cnt).c_str());
+            overflow = true;
+        }
+    if (overflow) return 1;
     if ((*ctx)->validation_message_count() > 0) {
         std::fprintf(stderr, "render: %zu validation message(s)\n", (*ctx)->validation_message_count());
         return 1;

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <future>
+#include <map>
 #include <optional>
 
 namespace fs = std::filesystem;
@@ -39,6 +40,21 @@ void screenshot(exec::Executor& ex, int& counter) {
     auto img = ex.read(ex.graph().desc.output);
     if (img && image::save_image(*img, file)) std::fprintf(stderr, "passlab: screenshot %s\n", file.string().c_str());
     else std::fprintf(stderr, "passlab: screenshot failed\n");
+}
+
+// A counter above its buffer's capacity: warned once per episode (frames in a row above it), not
+// every frame; keyed by buffer name so a reload does not repeat the warning of an ongoing one.
+void warn_counter_overflow(const exec::Executor& ex, std::map<std::string, bool>& overflowing, EventLog& log) {
+    for (const auto& c : ex.counters()) {
+        bool& was = overflowing[c.buffer];
+        if (c.overflow() && !was) {
+            std::fprintf(stderr, "passlab: warning: buffer '%s' counted %u > capacity %llu (frame %d)\n", c.buffer.c_str(), c.count,
+                         static_cast<unsigned long long>(c.capacity), c.frame);
+            log.write("counter-overflow", "\"buffer\":" + json_string(c.buffer) + ",\"count\":" + std::to_string(c.count) +
+                                              ",\"capacity\":" + std::to_string(c.capacity));
+        }
+        was = c.overflow();
+    }
 }
 
 // The panel's param edits outlive reloads: re-applied to every new executor where the param
@@ -166,6 +182,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
     graph::OrbitCamera camera = current->graph().desc.view.orbit;
     glm::vec4 mouse(0.0f);
     int frame = 0, screenshots = 0;
+    std::map<std::string, bool> overflowing;  // buffers whose counter is above capacity now
     double elapsed = 0;
     std::fprintf(stderr, "passlab: drag to orbit, wheel to zoom, space pause, -> step, F12 screenshot, Tab panel, F1 keys, Esc quit\n");
     while (!(*window)->should_close()) {
@@ -288,6 +305,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
             if ((*ctx)->hung()) exit_after_hang(rc);
             return rc;
         }
+        warn_counter_overflow(*current, overflowing, log);
         if (st.screenshot) screenshot(*current, screenshots);
         st.screenshot = false;
         if (st.show_viewer) {

@@ -4,8 +4,10 @@
 #include "check/checks.hpp"
 
 #include "check/args.hpp"
+#include "check/buffer_checks.hpp"
 #include "check/golden.hpp"
 #include "check/properties.hpp"
+#include "exec/bind.hpp"
 #include "image/image.hpp"
 
 #include <algorithm>
@@ -22,6 +24,7 @@ namespace {
 struct Rendered {
     std::unique_ptr<exec::Executor> ex;
     std::map<std::string, image::Image> cache;
+    std::map<std::string, std::vector<uint32_t>> buffers;
     Result<const image::Image*> get(const std::string& name) {
         auto it = cache.find(name);
         if (it != cache.end()) return &it->second;
@@ -29,7 +32,24 @@ struct Rendered {
         if (!img) return img.error();
         return &cache.emplace(name, std::move(img.value())).first->second;
     }
+    Result<const std::vector<uint32_t>*> get_buffer(const std::string& name) {
+        auto it = buffers.find(name);
+        if (it != buffers.end()) return &it->second;
+        auto words = ex->read_buffer(name);
+        if (!words) return words.error();
+        return &buffers.emplace(name, std::move(words.value())).first->second;
+    }
 };
+
+// One result per declared counter: a count above the capacity after any frame fails the case.
+CheckResult counter_result(const exec::CounterReading& c) {
+    CheckResult r;
+    r.what = "counter buffer '" + c.buffer + "' <= capacity " + std::to_string(c.capacity);
+    r.passed = c.overflow_frame < 0;
+    r.detail = r.passed ? "largest count " + std::to_string(c.peak) + " (after frame " + std::to_string(c.peak_frame) + ")"
+                        : exec::overflow_message(c) + " (largest count " + std::to_string(c.peak) + ")";
+    return r;
+}
 
 struct Variant {
     std::map<std::string, graph::Value> set;  // extra param overrides
@@ -48,6 +68,7 @@ Result<Rendered> render_case(vk::Context& ctx, const fs::path& toml, const graph
     if (!built) return built.error();
     auto ex = exec::Executor::create(ctx, std::move(built.value()));
     if (!ex) return ex.error();
+    Rendered out{std::move(ex.value()), {}, {}};
     for (int f = 0; f < t.frames; ++f) {
         exec::FrameInput in;
         in.index = f;
@@ -55,9 +76,9 @@ Result<Rendered> render_case(vk::Context& ctx, const fs::path& toml, const graph
         in.time = t.time - static_cast<double>(t.frames - 1 - f) * t.step;
         in.camera = t.camera;
         in.instance_order = v.order;
-        if (auto s = (*ex)->render(in); !s) return s.error();
+        if (auto s = out.ex->render(in); !s) return s.error();
     }
-    return Rendered{std::move(ex.value()), {}};
+    return out;
 }
 
 // Checks that compare the case against other renders of it.
@@ -210,7 +231,15 @@ std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml,
                 }
                 if (!t.golden.empty())
                     cr.checks.push_back(compare_golden(**img, t, toml.parent_path(), opt, case_id));
+                for (const auto& w : rendered->ex->counters()) cr.checks.push_back(counter_result(w));
                 for (const auto& c : t.checks) {
+                    if (c.args.count("buffer")) {
+                        auto words = rendered->get_buffer(str(c.args, "buffer"));
+                        const auto& cg = rendered->ex->graph();
+                        if (words) cr.checks.push_back(buffer_property(**words, c, exec::size_env(cg.desc, cg.view)));
+                        else cr.checks.push_back({c.kind, false, words.error().message, {}, {}, {}});
+                        continue;
+                    }
                     std::string which = str(c.args, "pass", subject);
                     auto target = rendered->get(which);
                     if (!target) {
@@ -221,11 +250,7 @@ std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml,
                     if (auto r = image_property(**target, c, lookup)) cr.checks.push_back(*r);
                     else if (auto r2 = render_property(ctx, toml, t, opt, c, which, **target)) cr.checks.push_back(*r2);
                     else
-                        cr.checks.push_back({c.kind, false,
-                                             "unknown check kind '" + c.kind + "' (" + c.loc.str() +
-                                                 "); known: probe, no_nan, range, mean, symmetry, white_furnace, "
-                                                 "matches_pass, matches_variant, stable, order_independent, monotone",
-                                             {}, {}, {}});
+                        cr.checks.push_back({c.kind, false, "no image check of kind '" + c.kind + "' (" + c.loc.str() + ")", {}, {}, {}});
                 }
             }
         }

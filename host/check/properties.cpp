@@ -1,5 +1,7 @@
 #include "check/properties.hpp"
 
+#include "check/agreement.hpp"
+
 #include <cmath>
 #include <limits>
 
@@ -75,6 +77,82 @@ CheckResult probe(const image::Image& img, const graph::CheckDesc& c) {
     return r;
 }
 
+std::string size_text(const image::Image& i) { return std::to_string(i.width) + "x" + std::to_string(i.height); }
+
+// The check's `mask` (an image of the same run, the subject's size), or none.
+Result<Mask> mask_of(const graph::CheckDesc& c, const image::Image& subject, const ImageLookup& other) {
+    Mask m;
+    if (!c.args.count("mask")) return m;
+    auto img = other(str(c.args, "mask"));
+    if (!img) return img.error();
+    if ((*img)->width != subject.width || (*img)->height != subject.height)
+        return make_error("mask '" + str(c.args, "mask") + "' is " + size_text(**img) + ", the image " + size_text(subject));
+    m.img = *img;
+    m.channel = static_cast<int>(num(c.args, "mask_channel", 0));
+    m.invert = num(c.args, "invert_mask", 0) != 0;
+    return m;
+}
+
+// range with partial agreement: a pixel passes when every channel lies in [lo, hi].
+CheckResult range(const image::Image& img, const graph::CheckDesc& c, const std::vector<int>& chans, const Mask& mask,
+                  double lo, double hi) {
+    CheckResult r;
+    r.what = c.kind;
+    double mn = INFINITY, mx = -INFINITY;
+    bool finite = true;
+    Agreement a = tally(img.pixels.size() / 4, mask, 0.0, [&](size_t i, double&, size_t&) {
+        double e = 0;
+        for (int ch : chans) {
+            double v = img.pixels[i * 4 + static_cast<size_t>(ch)];
+            finite = finite && std::isfinite(v);
+            mn = std::min(mn, v), mx = std::max(mx, v);
+            e = std::max({e, lo - v, v - hi});
+            if (!std::isfinite(v)) e = INFINITY;
+        }
+        return e;
+    });
+    r.passed = a.counted > 0 && a.fraction() >= num(c.args, "fraction", 1.0);
+    r.detail = "values in [" + fmt(mn) + ", " + fmt(mx) + "], allowed [" + fmt(lo) + ", " + fmt(hi) + "]" +
+               (finite ? "" : ", NaN/Inf present");
+    if (std::string part = describe(a, c.args); !part.empty()) r.detail += "; " + part;
+    return r;
+}
+
+// matches_pass: per pixel the largest channel difference against `tol`, on a `fraction` of the
+// counted pixels, and/or the RMSE over them against `rmse`. Only `rmse` given: RMSE alone.
+CheckResult matches(const image::Image& img, const image::Image& o, const graph::CheckDesc& c, const std::vector<int>& chans,
+                    const Mask& mask) {
+    CheckResult r;
+    r.what = "matches_pass " + str(c.args, "other");
+    if (img.width != o.width || img.height != o.height) {
+        r.detail = "sizes differ: " + size_text(img) + " vs " + size_text(o);
+        return r;
+    }
+    double tol = num(c.args, "tol", 1e-3);
+    Agreement a = tally(img.pixels.size() / 4, mask, tol, [&](size_t i, double& sum_sq, size_t& values) {
+        double e = 0;
+        for (int ch : chans) {
+            size_t k = i * 4 + static_cast<size_t>(ch);
+            double d = std::fabs(double(img.pixels[k]) - double(o.pixels[k]));
+            e = std::isfinite(d) ? std::max(e, d) : INFINITY;
+            sum_sq += d * d;
+            ++values;
+        }
+        return e;
+    });
+    const bool has_rmse = c.args.count("rmse") > 0;
+    const bool per_pixel = !has_rmse || c.args.count("tol") || c.args.count("fraction");
+    r.passed = a.counted > 0;
+    if (per_pixel) r.passed = r.passed && a.fraction() >= num(c.args, "fraction", 1.0);
+    if (has_rmse) r.passed = r.passed && a.rmse() <= num(c.args, "rmse", 0.0);
+    r.detail = "max difference " + fmt(a.worst) + (per_pixel ? " (tol " + fmt(tol) + ")" : "");
+    if (std::string part = describe(a, c.args); !part.empty()) r.detail += "; " + part;
+    if (has_rmse || c.args.count("mask") || c.args.count("fraction"))
+        r.detail += "; rmse " + fmt(a.rmse()) + (has_rmse ? " (bound " + fmt(num(c.args, "rmse", 0.0)) + ")" : "");
+    if (a.counted == 0) r.detail += "; no pixel counted";
+    return r;
+}
+
 } // namespace
 
 std::optional<CheckResult> image_property(const image::Image& img, const graph::CheckDesc& c, const ImageLookup& other) {
@@ -85,8 +163,11 @@ std::optional<CheckResult> image_property(const image::Image& img, const graph::
     size_t n = static_cast<size_t>(img.width) * img.height;
     if (c.kind == "no_nan") {
         // NaN and Inf both fail: a float target shows them, an 8-bit one would hide NaN as 0.
+        // All four channels unless channel(s) name some.
+        std::vector<int> which = c.args.count("channel") || c.args.count("channels") ? chans : std::vector<int>{0, 1, 2, 3};
         size_t bad = 0;
-        for (float v : img.pixels) bad += !std::isfinite(v);
+        for (size_t i = 0; i < n; ++i)
+            for (int ch : which) bad += !std::isfinite(img.pixels[i * 4 + static_cast<size_t>(ch)]);
         r.passed = bad == 0;
         r.detail = std::to_string(bad) + " NaN/Inf value(s)";
         return r;
@@ -101,19 +182,12 @@ std::optional<CheckResult> image_property(const image::Image& img, const graph::
             double e = num(c.args, "expect", 1.0), t = num(c.args, "tol", 0.01);
             lo = e - t, hi = e + t;
         }
-        double mn = INFINITY, mx = -INFINITY;
-        bool finite = true;
-        for (size_t i = 0; i < n; ++i)
-            for (int ch : chans) {
-                double v = img.pixels[i * 4 + static_cast<size_t>(ch)];
-                finite = finite && std::isfinite(v);
-                mn = std::min(mn, v);
-                mx = std::max(mx, v);
-            }
-        r.passed = finite && mn >= lo && mx <= hi;
-        r.detail = "values in [" + fmt(mn) + ", " + fmt(mx) + "], allowed [" + fmt(lo) + ", " + fmt(hi) + "]" +
-                   (finite ? "" : ", NaN/Inf present");
-        return r;
+        auto mask = mask_of(c, img, other);
+        if (!mask) {
+            r.detail = mask.error().message;
+            return r;
+        }
+        return range(img, c, chans, *mask, lo, hi);
     }
     if (c.kind == "mean") {
         double sum = 0.0;
@@ -147,14 +221,12 @@ std::optional<CheckResult> image_property(const image::Image& img, const graph::
         std::string name = str(c.args, "other");
         r.what = "matches_pass " + name;
         auto o = other(name);
-        if (!o) {
-            r.detail = o.error().message;
+        auto mask = o ? mask_of(c, img, other) : Result<Mask>(o.error());
+        if (!mask) {
+            r.detail = mask.error().message;
             return r;
         }
-        double worst = max_difference(img, **o, chans), tol = num(c.args, "tol", 1e-3);
-        r.passed = worst <= tol;
-        r.detail = "max difference " + fmt(worst) + " (tol " + fmt(tol) + ")";
-        return r;
+        return matches(img, **o, c, chans, *mask);
     }
     return std::nullopt;
 }

@@ -60,6 +60,7 @@ Result<std::unique_ptr<Executor>> Executor::create(vk::Context& ctx, CompiledGra
     std::map<std::string, VkDeviceSize> buffer_sizes;
     for (const auto& [name, gb] : ex->res_.buffers) buffer_sizes[name] = gb.phys[0]->buffer.size;
     if (auto s = check_binding_limits(ctx.properties().limits, ctx.properties().deviceName, g, buffer_sizes); !s) return s.error();
+    if (auto s = ex->create_counters(); !s) return s.error();
 
     std::map<VkDescriptorType, uint32_t> counts;
     uint32_t max_sets = 0;
@@ -190,6 +191,7 @@ Status Executor::render(const FrameInput& in) {
     VK_CHECK(vkResetFences(ctx_.device(), 1, &f));
     ctx_.collect(serial);
     ++frames_rendered_;
+    collect_counters();
 
     timings_.clear();
     if (timestamps_) {
@@ -270,6 +272,7 @@ Status Executor::record_frame(VkCommandBuffer cb, const FrameInput&) {
         if (timestamps_)
             vkCmdWriteTimestamp2(cb, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, queries_, static_cast<uint32_t>(2 * i + 1));
     }
+    record_counter_reads(cb);
     return ok_status();
 }
 

@@ -33,6 +33,24 @@ struct FrameInput {
     InstanceOrder instance_order = InstanceOrder::natural;
 };
 
+// A buffer's counter word (`counter = { offset, capacity }`) as read after each frame, with the
+// largest count this executor saw and the first frame it went above the capacity.
+struct CounterReading {
+    std::string buffer;
+    uint32_t offset = 0;    // bytes
+    uint64_t capacity = 0;  // evaluated at the executor's size
+    uint32_t count = 0;     // the word after the last frame
+    int frame = -1;         // that frame's index (-1: none yet)
+    uint32_t peak = 0;      // largest count so far, after frame peak_frame
+    int peak_frame = -1;
+    uint32_t overflow_count = 0;  // the count after overflow_frame, the first above capacity
+    int overflow_frame = -1;      // -1: never overflowed
+    bool overflow() const { return frame >= 0 && count > capacity; }
+};
+
+// "buffer 'nodes' counted N > capacity M after frame F" (the first overflow), for every verb.
+std::string overflow_message(const CounterReading& c);
+
 struct PassTiming {
     std::string name;
     double gpu_ms = 0.0;
@@ -49,6 +67,11 @@ class Executor {
     Status render(const FrameInput& in);
     // Reads back an image (its current contents, after the last frame) as RGBA float.
     Result<image::Image> read(const std::string& image, int mip = 0, int layer = 0);
+
+    // Reads back a buffer (its contents after the last frame) as 32-bit words.
+    Result<std::vector<uint32_t>> read_buffer(const std::string& buffer);
+    // Every declared counter, read after each frame (a 4-byte copy each, no full readback).
+    const std::vector<CounterReading>& counters() const { return counters_; }
 
     // Records a blit of `image` (its current contents) into `dst`, which the caller has put in
     // TRANSFER_DST_OPTIMAL; the source's transition comes from the planner. For presenting.
@@ -83,6 +106,9 @@ class Executor {
     struct Impl;
     Status record_frame(VkCommandBuffer cb, const FrameInput& in);
     Status record_pass(VkCommandBuffer cb, size_t pass, int iteration);
+    Status create_counters();                    // buffer_readback.cpp
+    void record_counter_reads(VkCommandBuffer cb);  // at the end of a frame
+    void collect_counters();                       // after its fence
     Status record_buffer_image_copy(VkCommandBuffer cb, const graph::PassDesc& pd, PhysBuffer* b,
                                     PhysImage* p, const vk::FormatInfo* f, bool to_image);
 
@@ -105,6 +131,8 @@ class Executor {
     vk::UniqueQueryPool queries_;
     bool timestamps_ = false;
     std::vector<PassTiming> timings_;
+    std::vector<CounterReading> counters_;
+    vk::Buffer counter_readback_;  // host-visible, 4 bytes per counter
     InstanceOrder instance_order_ = InstanceOrder::natural;
     int frame_parity_ = 0;  // which physical image of a history pair is "current"
     int frames_rendered_ = 0;

@@ -75,6 +75,14 @@ struct ImageDesc {
     KeyLocs keys;  // value locations: "alias", "file", "generator", "samples", "mips", ...
 };
 
+// A counter word inside a buffer (an atomic append index: OIT nodes, particles): the host reads
+// it after every frame (4 bytes copied, no full readback) and reports a count above `capacity`.
+struct CounterDesc {
+    uint32_t offset = 0;  // bytes, a multiple of 4
+    SizeExpr capacity;    // elements the buffer holds; a size expression ("view.w*view.h*4")
+    SourceLoc loc;
+};
+
 struct BufferDesc {
     std::string name;
     SourceLoc loc;
@@ -84,6 +92,7 @@ struct BufferDesc {
     std::vector<double> data;       // initial contents ...
     std::string data_type = "float";  // ... as float | int | uint 32-bit values
     bool history = false;
+    std::optional<CounterDesc> counter;
     KeyLocs keys;
 };
 
@@ -251,8 +260,9 @@ using Value = std::variant<double, bool, std::string, std::vector<double>>;
 
 struct CheckDesc {
     std::string kind;  // "probe", "no_nan", "range", "mean", ... (see docs/format.md)
-    std::map<std::string, Value> args;
+    std::map<std::string, Value> args;  // every key but `kind`, checked against the kind's keys
     SourceLoc loc;
+    KeyLocs keys;  // where each argument's value is written ("buffer", "mask", "other", ...)
 };
 
 struct TestDesc {

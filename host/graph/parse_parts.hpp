@@ -16,6 +16,9 @@ Status parse_meshes(const toml::table& t, const std::string& file, GraphDesc& g)
 Status parse_pass(const toml::table& t, const std::string& file, GraphDesc& g);       // parse_passes.cpp
 Status parse_test(const toml::table& t, const std::string& file, GraphDesc& g);       // parse_tests.cpp
 Status parse_orbit(TableReader& r, OrbitCamera& o);                                   // parse.cpp
+// One entry of a test's `checks = [...]` (or of `probes = [...]`, with forced_kind "probe"),
+// strictly: the kind's keys only, each type- and range-checked.                      // parse_checks.cpp
+Status parse_check(const toml::table& t, TableReader& owner, CheckDesc& c, const char* forced_kind);
 
 // A GLSL identifier: [A-Za-z_][A-Za-z0-9_]*.
 bool is_identifier(const std::string& s);

@@ -171,6 +171,25 @@ Status parse_image(const toml::table& it, const std::string& file, ImageDesc& d)
     return ok_status();
 }
 
+// counter = { offset = bytes, capacity = size expression }: a word the host reads every frame.
+Status parse_counter(TableReader& r, BufferDesc& d) {
+    auto ct = r.table("counter", "a table { offset = bytes, capacity = elements }");
+    if (!ct) return ct.error();
+    if (!*ct) return ok_status();
+    TableReader cr(**ct, r.file(), "buffer '" + d.name + "' counter", &d.keys, "counter.");
+    CounterDesc c;
+    c.loc = r.value_loc("counter");
+    int offset = 0;
+    if (auto s = cr.integer("offset", offset, 0, INT32_MAX); !s) return s;
+    if (offset % 4) return cr.error(cr.what() + ": offset is in bytes and must be a multiple of 4 (a 32-bit word)", cr.value_loc("offset"));
+    c.offset = static_cast<uint32_t>(offset);
+    if (!cr.has("capacity")) return cr.error(cr.what() + " needs capacity = elements (a number or a size expression)", c.loc);
+    if (auto s = cr.size("capacity", c.capacity); !s) return s;
+    if (auto s = cr.finish(); !s) return s;
+    d.counter = std::move(c);
+    return ok_status();
+}
+
 Status parse_buffer(const toml::table& bt, const std::string& file, BufferDesc& d) {
     TableReader r(bt, file, "buffer '" + d.name + "'", &d.keys);
     if (!r.has("size")) return r.error("buffer '" + d.name + "' needs size = bytes (a number or an expression)", d.loc);
@@ -184,6 +203,7 @@ Status parse_buffer(const toml::table& bt, const std::string& file, BufferDesc& 
     if (auto s = r.numbers("data", d.data, 0, size_t(1) << 24); !s) return s;
     if (auto s = r.choice("type", d.data_type, {"float", "int", "uint"}); !s) return s;
     if (auto s = r.boolean("history", d.history); !s) return s;
+    if (auto s = parse_counter(r, d); !s) return s;
     if (auto s = r.finish(); !s) return s;
     if (r.has("type") && d.data.empty()) return r.error("buffer '" + d.name + "': type describes data; add data = [...]", r.value_loc("type"));
     // Integer data must be representable exactly in 32 bits of the declared type.

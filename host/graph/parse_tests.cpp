@@ -1,50 +1,10 @@
-// [[test]]: test cases for `passlab test`. Probes are checked here (they have a fixed shape);
-// other checks carry free-form arguments that check/ interprets and reports on.
+// [[test]]: test cases for `passlab test`. Its probes and checks are parsed by parse_checks.cpp;
+// check/ evaluates them.
 #include "graph/parse_parts.hpp"
 
 namespace pl::graph {
 
 namespace {
-
-Status parse_probe(const toml::table& t, TableReader& owner, CheckDesc& c) {
-    TableReader r(t, owner.file(), owner.what() + " probe");
-    c.kind = "probe";
-    c.loc = r.loc();
-    std::vector<double> uv, px, expect;
-    double tol = 0.01;
-    std::string pass;
-    if (auto s = r.numbers("uv", uv, 2, 2); !s) return s;
-    if (auto s = r.numbers("px", px, 2, 2); !s) return s;
-    if (auto s = r.numbers("expect", expect, 1, 4); !s) return s;
-    if (auto s = r.number("tol", tol); !s) return s;
-    if (auto s = r.str("pass", pass); !s) return s;
-    if (auto s = r.finish({"channel", "channels"}); !s) return s;
-    if (uv.empty() == px.empty()) return r.error(r.what() + " needs exactly one of uv = [u, v] (0..1) or px = [x, y]", c.loc);
-    if (expect.empty()) return r.error(r.what() + " needs expect = [1 to 4 values]", c.loc);
-    if (tol < 0) return r.error(r.what() + ": tol must be >= 0", r.value_loc("tol"));
-    for (auto&& [k, v] : t) {
-        auto value = to_value(v, r, std::string(k.str()));
-        if (!value) return value.error();
-        c.args[std::string(k.str())] = *value;
-    }
-    return ok_status();
-}
-
-Status parse_check(const toml::table& t, TableReader& owner, CheckDesc& c) {
-    TableReader r(t, owner.file(), owner.what() + " check");
-    c.loc = r.loc();
-    if (auto s = r.str("kind", c.kind); !s) return s;
-    if (c.kind.empty()) return r.error(r.what() + " needs kind = \"...\" (probe, no_nan, range, mean, ...)", c.loc);
-    if (c.kind == "probe") return parse_probe(t, owner, c);
-    for (auto&& [k, v] : t) {
-        std::string key(k.str());
-        if (key == "kind") continue;
-        auto value = to_value(v, r, key);
-        if (!value) return value.error();
-        c.args[key] = *value;
-    }
-    return ok_status();
-}
 
 Status parse_test_body(const toml::table& t, const std::string& file, GraphDesc& g, TestDesc& d) {
     std::string what = "[[test]]";
@@ -111,7 +71,7 @@ Status parse_test_body(const toml::table& t, const std::string& file, GraphDesc&
             const toml::table* ct = e.as_table();
             if (!ct) return r.error(r.what() + ": " + key + " holds tables { ... }, not " + type_name(e), r.loc_of(e));
             CheckDesc c;
-            Status s = std::string(key) == "probes" ? parse_probe(*ct, r, c) : parse_check(*ct, r, c);
+            Status s = parse_check(*ct, r, c, std::string(key) == "probes" ? "probe" : nullptr);
             if (!s) return s;
             d.checks.push_back(std::move(c));
         }

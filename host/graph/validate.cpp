@@ -249,7 +249,7 @@ Status check_set_value(const ParamDesc& p, const Value& v, const SourceLoc& loc,
     return ok_status();
 }
 
-Status check_tests(const GraphDesc& g, const DeclaredNames& n) {
+Status check_tests(const GraphDesc& g, const DeclaredNames& n, const SizeEnv& env) {
     for (size_t k = 0; k < g.tests.size(); ++k) {
         const TestDesc& t = g.tests[k];
         for (size_t j = 0; j < k; ++j)
@@ -272,24 +272,8 @@ Status check_tests(const GraphDesc& g, const DeclaredNames& n) {
             return e;
         };
         if (auto s = need_image(t.pass, t.keys.at("pass", t.loc)); !s) return s;
-        for (const auto& c : t.checks) {
-            for (const char* key : {"pass", "other"}) {
-                auto it = c.args.find(key);
-                if (it == c.args.end()) continue;
-                const std::string* s = std::get_if<std::string>(&it->second);
-                if (!s) return make_error("test '" + t.name + "': " + c.kind + " " + key + " must name an image", c.loc);
-                if (auto st = need_image(*s, c.loc); !st) return st;
-            }
-            auto it = c.args.find("param");
-            if (it != c.args.end() && (c.kind == "matches_variant" || c.kind == "monotone")) {
-                const std::string* s = std::get_if<std::string>(&it->second);
-                if (!s || !g.find_param(*s)) {
-                    Error e = ref_error("param", s ? *s : "?", c.loc, "", n.params, "params");
-                    e.message = "test '" + t.name + "': " + c.kind + ": " + e.message;
-                    return e;
-                }
-            }
-        }
+        for (const auto& c : t.checks)
+            if (auto s = validate_check(g, n, t, c, env); !s) return s;
     }
     return ok_status();
 }
@@ -326,7 +310,7 @@ Status validate_graph(const GraphDesc& g, const ValidateOptions& opt) {
         return e;
     }
 
-    if (auto s = check_tests(g, names); !s) return s;
+    if (auto s = check_tests(g, names, env); !s) return s;
     if (opt.per_test_sizes)
         for (const auto& t : g.tests) {
             if (!t.size && t.set.empty()) continue;

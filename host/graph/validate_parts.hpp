@@ -17,6 +17,9 @@ Error ref_error(const std::string& what, const std::string& name, const SourceLo
 // "12.5 GiB", "3.0 MiB", "20 bytes".
 std::string human_bytes(double bytes);
 
+// The names one check of test `t` refers to (images, buffers, params) exist and have the right
+// kind; an `expect` expression evaluates at `env`.                                  validate_checks.cpp
+Status validate_check(const GraphDesc& g, const DeclaredNames& n, const TestDesc& t, const CheckDesc& c, const SizeEnv& env);
 Status validate_passes(const GraphDesc& g, const ValidateOptions& opt, const DeclaredNames& names);
 // Every size of the graph at one environment: images (sides, memory), buffers (bytes), pass
 // groups/threads/repeat. `context` (e.g. "in test 'x' (64x64)") is added as a note when not empty.

@@ -98,6 +98,30 @@ Status buffer_size(const BufferDesc& b, const SizeEnv& env, const Ctx& c) {
     return ok_status();
 }
 
+// A counter word must lie inside its buffer, and its capacity must evaluate to a count >= 0.
+Status counter_size(const BufferDesc& b, const SizeEnv& env, const Ctx& c) {
+    if (!b.counter) return ok_status();
+    auto fail = [&](const std::string& msg, const SourceLoc& l) {
+        Error e = make_error("buffer '" + b.name + "': " + msg, l.known() ? l : b.counter->loc);
+        e.resource = b.name;
+        return c.with(std::move(e));
+    };
+    auto sz = eval_scalar(b.size, env);
+    if (sz && int64_t(b.counter->offset) + 4 > *sz)
+        return fail("counter offset " + std::to_string(b.counter->offset) + " is outside the buffer's " + std::to_string(*sz) + " bytes",
+                    b.keys.at("counter.offset", b.counter->loc));
+    auto cap = eval_scalar(b.counter->capacity, env);
+    if (!cap) {
+        Error e = cap.error();
+        e.resource = b.name;
+        return c.with(std::move(e));
+    }
+    if (*cap < 0 || *cap > int64_t(UINT32_MAX))
+        return fail("counter capacity evaluates to " + std::to_string(*cap) + "; it must be between 0 and 4294967295",
+                    b.counter->capacity.loc);
+    return ok_status();
+}
+
 Status pass_sizes(const PassDesc& p, const SizeEnv& env, const Ctx& c) {
     auto err = [&](const std::string& msg, const SourceLoc& l) {
         Error e = make_error(msg, l.known() ? l : p.loc);
@@ -137,6 +161,8 @@ Status validate_sizes(const GraphDesc& g, const SizeEnv& env, const std::string&
         if (auto s = image_size(g, i, env, c); !s) return s;
     for (const auto& b : g.buffers)
         if (auto s = buffer_size(b, env, c); !s) return s;
+    for (const auto& b : g.buffers)
+        if (auto s = counter_size(b, env, c); !s) return s;
     for (const auto& p : g.passes)
         if (auto s = pass_sizes(p, env, c); !s) return s;
     return ok_status();

@@ -1,0 +1,134 @@
+// Buffer checks on words built here: selection (index, range, stride, field), exact integer
+// decoding (0xffffffff, negative ints), and each kind's verdict, including the failures.
+#include "check/agreement.hpp"
+#include "check/buffer_checks.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+using namespace pl;
+using namespace pl::check;
+
+namespace {
+
+uint32_t bits(float f) {
+    uint32_t w;
+    std::memcpy(&w, &f, 4);
+    return w;
+}
+
+graph::CheckDesc make_check(const std::string& kind, Args args) {
+    graph::CheckDesc c;
+    c.kind = kind;
+    c.args = std::move(args);
+    return c;
+}
+
+CheckResult run(const std::vector<uint32_t>& words, const std::string& kind, Args args) {
+    args["buffer"] = std::string("b");
+    return buffer_property(words, make_check(kind, std::move(args)), graph::SizeEnv{});
+}
+
+} // namespace
+
+TEST(BufferSelect, StrideAndFieldAddressWords) {
+    // 4 elements of 8 bytes: { id, value }.
+    std::vector<uint32_t> w = {0, 10, 1, 11, 2, 12, 3, 13};
+    Args a{{"buffer", std::string("b")}, {"stride", 8.0}, {"field", 4.0}, {"type", std::string("uint")}};
+    auto s = select(a, w.size());
+    ASSERT_TRUE(s);
+    EXPECT_EQ(s->count, 4u);
+    EXPECT_EQ(decode(w, *s), (std::vector<double>{10, 11, 12, 13}));
+    a["range"] = std::vector<double>{1, 2};
+    s = select(a, w.size());
+    ASSERT_TRUE(s);
+    EXPECT_EQ(decode(w, *s), (std::vector<double>{11, 12}));
+    a["range"] = std::vector<double>{3, 2};  // element 4 does not exist
+    EXPECT_FALSE(select(a, w.size()));
+}
+
+TEST(BufferSelect, DecodesEveryTypeExactly) {
+    std::vector<uint32_t> w = {0xffffffffu, 0x80000000u, bits(-0.25f)};
+    Args a{{"buffer", std::string("b")}, {"type", std::string("uint")}};
+    EXPECT_EQ(decode(w, *select(a, 3)), (std::vector<double>{4294967295.0, 2147483648.0, double(bits(-0.25f))}));
+    a["type"] = std::string("int");
+    EXPECT_EQ(decode(w, *select(a, 3))[0], -1.0);
+    EXPECT_EQ(decode(w, *select(a, 3))[1], -2147483648.0);
+    a["type"] = std::string("float");
+    EXPECT_EQ(decode(w, *select(a, 3))[2], -0.25);
+}
+
+TEST(BufferChecks, IntegerProbeIsExact) {
+    std::vector<uint32_t> w = {0xffffffffu, 7};
+    EXPECT_TRUE(run(w, "probe", {{"index", 0.0}, {"type", std::string("uint")}, {"expect", 4294967295.0}}).passed);
+    EXPECT_FALSE(run(w, "probe", {{"index", 0.0}, {"type", std::string("uint")}, {"expect", 4294967294.0}}).passed);
+    EXPECT_TRUE(run(w, "probe", {{"index", 0.0}, {"type", std::string("int")}, {"expect", -1.0}}).passed);
+    auto r = run(w, "probe", {{"range", std::vector<double>{0, 2}}, {"type", std::string("uint")}, {"expect", std::vector<double>{1, 7}}});
+    EXPECT_FALSE(r.passed);
+    EXPECT_NE(r.detail.find("element 0 = 4294967295 (0xffffffff), expected 1"), std::string::npos) << r.detail;
+}
+
+TEST(BufferChecks, FloatProbeComparesWithTheStoredFloat) {
+    std::vector<uint32_t> w = {bits(0.1f)};
+    EXPECT_TRUE(run(w, "probe", {{"index", 0.0}, {"expect", 0.1}}).passed);  // 0.1 rounds like the shader's
+    EXPECT_FALSE(run(w, "probe", {{"index", 0.0}, {"expect", 0.1001}}).passed);
+    EXPECT_TRUE(run(w, "probe", {{"index", 0.0}, {"expect", 0.1001}, {"tol", 1e-3}}).passed);
+}
+
+TEST(BufferChecks, ExpectExpressionUsesTheView) {
+    std::vector<uint32_t> w = {640 * 360 * 3};
+    graph::SizeEnv env;  // 640x360
+    Args a{{"buffer", std::string("b")}, {"index", 0.0}, {"type", std::string("uint")}, {"expect", std::string("view.w*view.h*3")}};
+    EXPECT_TRUE(buffer_property(w, make_check("probe", a), env).passed);
+    env.view_w = 64;
+    EXPECT_FALSE(buffer_property(w, make_check("probe", a), env).passed);
+}
+
+TEST(BufferChecks, SortedWithinGroups) {
+    std::vector<uint32_t> w = {1, 2, 3, 0, 5, 9};  // groups of 3: [1,2,3] [0,5,9]
+    EXPECT_TRUE(run(w, "sorted", {{"type", std::string("uint")}, {"group", 3.0}}).passed);
+    auto whole = run(w, "sorted", {{"type", std::string("uint")}});
+    EXPECT_FALSE(whole.passed);
+    EXPECT_NE(whole.detail.find("element 2 = 3 > element 3 = 0"), std::string::npos) << whole.detail;
+    EXPECT_FALSE(run(w, "sorted", {{"type", std::string("uint")}, {"group", 3.0}, {"order", std::string("descending")}}).passed);
+    std::vector<uint32_t> nan = {bits(1.0f), 0x7fc00000u, bits(2.0f)};
+    EXPECT_FALSE(run(nan, "sorted", {}).passed);  // NaN is never in order
+}
+
+TEST(BufferChecks, SumCountRangeNoNan) {
+    std::vector<uint32_t> w = {0xffffffffu, 0xffffffffu, 3};
+    auto u = std::string("uint");
+    EXPECT_TRUE(run(w, "sum", {{"type", u}, {"expect", 2.0 * 4294967295.0 + 3}}).passed);  // no 32-bit wrap
+    EXPECT_TRUE(run(w, "count", {{"type", u}, {"value", 4294967295.0}, {"expect", 2.0}}).passed);
+    EXPECT_FALSE(run(w, "count", {{"type", u}, {"value", 4294967295.0}, {"expect", 3.0}}).passed);
+    EXPECT_TRUE(run(w, "count", {{"type", u}, {"max", 10.0}, {"expect", 1.0}}).passed);
+    EXPECT_FALSE(run(w, "range", {{"type", u}, {"max", 10.0}}).passed);
+    EXPECT_TRUE(run(w, "range", {{"type", std::string("int")}, {"min", -1.0}, {"max", 3.0}}).passed);
+    std::vector<uint32_t> f = {bits(1.0f), 0x7f800000u};
+    EXPECT_FALSE(run(f, "no_nan", {}).passed);
+    EXPECT_TRUE(run(f, "no_nan", {{"index", 0.0}}).passed);
+}
+
+TEST(Agreement, MaskAndFraction) {
+    image::Image m;
+    m.width = 4, m.height = 1;
+    m.pixels = {1, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0};  // pixels 0 and 2 in the mask
+    std::vector<double> err = {0.0, 5.0, 0.5, 0.0};
+    auto f = [&](size_t i, double& sq, size_t& n) {
+        sq += err[i] * err[i];
+        ++n;
+        return err[i];
+    };
+    Agreement all = tally(4, Mask{}, 0.1, f);
+    EXPECT_EQ(all.counted, 4u);
+    EXPECT_EQ(all.passing, 2u);
+    EXPECT_DOUBLE_EQ(all.worst, 5.0);
+    Agreement in = tally(4, Mask{&m, 0, false}, 0.1, f);
+    EXPECT_EQ(in.counted, 2u);
+    EXPECT_EQ(in.passing, 1u);
+    EXPECT_DOUBLE_EQ(in.rmse(), std::sqrt(0.25 / 2));
+    Agreement out = tally(4, Mask{&m, 0, true}, 0.1, f);
+    EXPECT_EQ(out.counted, 2u);
+    EXPECT_EQ(out.passing, 1u);
+}
