@@ -22,7 +22,7 @@ std::string describe(const Agreement& a, const Args& args) {
     if (!args.count("fraction") && !args.count("mask")) return "";
     std::string s = std::to_string(a.passing) + " of " + std::to_string(a.counted) + " pixel(s)" +
                     (args.count("mask") ? (num(args, "invert_mask", 0) != 0 ? " outside" : " inside") + std::string(" mask '") + str(args, "mask") + "'" : "") + " pass (" + fmt(a.fraction()) + ")";
-    if (args.count("fraction")) s += ", need >= " + fmt(num(args, "fraction", 1.0));
+    s += args.count("fraction") ? ", need >= " + fmt(num(args, "fraction", 1.0)) : ", need all";
     return s;
 }
 
