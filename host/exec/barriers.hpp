@@ -23,6 +23,9 @@ struct BarrierBatch {
 void require(BarrierBatch& batch, PhysImage& img, const Usage& usage, bool discard = false);
 void require(BarrierBatch& batch, PhysBuffer& buf, const Usage& usage);
 
+// Makes transfer writes visible to host reads after the submission's fence (readbacks).
+void transfer_to_host(VkCommandBuffer cb);
+
 // Fills mips 1..n-1 of `img` from mip 0 by successive linear 2:1 blits (a box filter for
 // power-of-two sizes). Leaves every level in the state `final_usage` asks for.
 void record_mip_chain(VkCommandBuffer cb, PhysImage& img, const Usage& final_usage);

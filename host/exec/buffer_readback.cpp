@@ -11,21 +11,6 @@
 
 namespace pl::exec {
 
-namespace {
-
-// Makes transfer writes visible to the host's reads after the fence.
-void transfer_to_host(VkCommandBuffer cb) {
-    VkMemoryBarrier2 mb{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-                        .srcStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                        .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                        .dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT,
-                        .dstAccessMask = VK_ACCESS_2_HOST_READ_BIT};
-    VkDependencyInfo di{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1, .pMemoryBarriers = &mb};
-    vkCmdPipelineBarrier2(cb, &di);
-}
-
-} // namespace
-
 std::string overflow_message(const CounterReading& c) {
     return "buffer '" + c.buffer + "' counted " + std::to_string(c.overflow_count) + " > capacity " + std::to_string(c.capacity) +
            " after frame " + std::to_string(c.overflow_frame);

@@ -522,14 +522,7 @@ Result<image::Image> Executor::read(const std::string& name, int mip, int layer)
                 .imageOffset = {0, 0, is3d ? layer : 0},
                 .imageExtent = {ext.width, ext.height, 1}};
             vkCmdCopyImageToBuffer(cb, p->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer, 1, &c);
-            // Make the copy visible to the host read below.
-            VkMemoryBarrier2 mb{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-                                .srcStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                                .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                .dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT,
-                                .dstAccessMask = VK_ACCESS_2_HOST_READ_BIT};
-            VkDependencyInfo di{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1, .pMemoryBarriers = &mb};
-            vkCmdPipelineBarrier2(cb, &di);
+            transfer_to_host(cb);  // the host reads the staging buffer below
         },
         timeout_);
     if (!st) return st.error();
