@@ -1,5 +1,5 @@
 // `passlab run --events FILE`: one JSON object per line (started, reload-started, reload-ok,
-// reload-failed, frame-presented, ...) with the time since start and the wall clock, so tests
+// reload-failed, frame-presented, counter-overflow, ...) with the time since start and the wall clock, so tests
 // and the reload benchmark can follow what the live lab did.
 #pragma once
 

@@ -1,19 +1,49 @@
 #!/bin/sh
-# `passlab run` on a graph whose append counter exceeds its buffer's capacity in every frame:
-# 10 frames give exactly one warning (once per overflow episode, not per frame) on stderr and
-# one counter-overflow event.
+# `passlab run` on a graph whose append counter exceeds its buffer's capacity (3 layers into
+# room for 2): one warning per overflow episode, not per frame. Many overflowing frames give one
+# warning (and one counter-overflow event); an edit to 1 layer ends the episode, an edit back to 3
+# starts a second one: exactly two in all.
 # Usage: counter_warning.sh PASSLAB WORKDIR   (from the source folder)
 set -eu
 passlab=$1 work=$2
-rm -rf "$work" && mkdir -p "$work"
-xvfb-run -a -s "-screen 0 640x480x24" "$passlab" run tests/bad/counter-overflow --frames 10 --events "$work/events.jsonl" \
-  > "$work/run.log" 2>&1
+rm -rf "$work" && mkdir -p "$work/p"
+p="$work/p" ev="$work/events.jsonl"
+src=$(pwd)/tests/bad/counter-overflow
+sed "s|\.\./\.\./graphs/buffer-checks/append.frag|$(pwd)/tests/graphs/buffer-checks/append.frag|" "$src/preset.toml" > "$p/preset.toml"
+count() { c=$(grep -c "$1" "$ev" 2>/dev/null) || c=0; echo "${c:-0}"; }
+wait_for() {  # wait_for PATTERN COUNT (20 s max)
+  i=0
+  while [ "$(count "$1")" -lt "$2" ]; do
+    i=$((i + 1)); [ $i -lt 200 ] || { echo "timed out waiting for $2 x $1" >&2; grep -v frame-presented "$ev" >&2; exit 1; }
+    sleep 0.1
+  done
+}
+layers() {  # layers N: rewrite the param the way editors save (temp file + rename)
+  sed "s/^layers = .*/layers = $1/" "$p/preset.toml" > "$p/preset.toml.tmp~" && mv "$p/preset.toml.tmp~" "$p/preset.toml"
+}
+xvfb-run -a -s "-screen 0 640x480x24" sh -c 'echo $$ > "$1"; exec "$2" run "$3" --events "$4" --seconds 60' sh \
+  "$work/pid" "$passlab" "$p" "$ev" > "$work/run.log" 2>&1 &
+trap 'kill "$(cat "$work/pid" 2>/dev/null)" 2>/dev/null || true' EXIT
+wait_for '"counter-overflow"' 1
+n=$(count frame-presented)
+wait_for frame-presented $((n + 10))          # ten more overflowing frames: no second warning
+[ "$(count '"counter-overflow"')" = 1 ] || { echo "warned more than once in one episode" >&2; exit 1; }
+layers 1
+wait_for reload-ok 1
+n=$(count frame-presented)
+wait_for frame-presented $((n + 3))           # within capacity: the episode ends
+layers 3
+wait_for reload-ok 2
+wait_for '"counter-overflow"' 2               # a new episode warns again
+n=$(count frame-presented)
+wait_for frame-presented $((n + 10))
+kill "$(cat "$work/pid")" 2>/dev/null || true
+sleep 0.5
 warnings=$(grep -c "warning: buffer 'nodes' counted 192 > capacity 128" "$work/run.log" || true)
-events=$(grep -c '"event":"counter-overflow".*"count":192,"capacity":128' "$work/events.jsonl" || true)
-frames=$(grep -c '"frame-presented"' "$work/events.jsonl" || true)
-if [ "$warnings" != 1 ] || [ "$events" != 1 ] || [ "$frames" != 10 ]; then
-  echo "expected 1 warning, 1 event over 10 frames; got $warnings warning(s), $events event(s), $frames frame(s)" >&2
+events=$(count '"counter-overflow".*"count":192,"capacity":128')
+if [ "$warnings" != 2 ] || [ "$events" != 2 ]; then
+  echo "expected 2 warnings and 2 events (two episodes); got $warnings warning(s), $events event(s)" >&2
   cat "$work/run.log" >&2
   exit 1
 fi
-echo "ok: one overflow warning over $frames frames"
+echo "ok: one warning per overflow episode ($(count frame-presented) frames, 2 episodes)"
