@@ -46,6 +46,8 @@ Status Executor::adopt_contents(Executor& old) {
         auto it = old.res_.buffers.find(name);
         if (it == old.res_.buffers.end()) continue;
         const auto &a = *gb.desc, &b = *it->second.desc;
+        // Host-built buffers are built fresh from their meshes, like file and generator images.
+        if (!a.generator.empty() || !b.generator.empty()) continue;
         // Initial data from the TOML: a changed array must be seen, so only identical ones carry over.
         if (a.data != b.data || a.data_type != b.data_type || gb.history != it->second.history) continue;
         for (size_t k = 0; k < 2; ++k)

@@ -2,6 +2,7 @@
 
 #include "exec/frame_block.hpp"
 #include "exec/params.hpp"
+#include "scene/scene_gpu.hpp"
 
 namespace pl::exec {
 
@@ -11,6 +12,9 @@ std::string preamble_source(const std::vector<graph::ParamDesc>& params) {
     s += kFrameBlockGlsl;
     s += params_glsl(params);
     s += kPushBlockGlsl;
+    // Structs of the host-built scene buffers (types only: no shader pays for them unless it
+    // includes raytrace/bvh.glsl, which declares the buffer).
+    s += scene::gpu::scene_glsl();
     // Shadertoy names, so snippets from there run unchanged (fragCoord is top-left based here).
     s += "#define iTime frame.time\n"
          "#define iTimeDelta frame.delta\n"

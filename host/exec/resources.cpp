@@ -6,6 +6,7 @@
 #include "graph/validate.hpp"
 #include "image/image.hpp"
 #include "scene/mesh.hpp"
+#include "scene/scene_buffer.hpp"
 #include "vk/check.hpp"
 #include "vk/names.hpp"
 
@@ -141,7 +142,7 @@ Status upload_pixels(vk::Context& ctx, GraphImage& gi, const image::Image& img) 
     return ctx.run_once([&](VkCommandBuffer cb) { record_upload(cb, pi, staging.buffer); });
 }
 
-Result<GpuMesh> create_mesh(vk::Context& ctx, const CompiledGraph& g, const graph::MeshDesc& md) {
+Result<scene::Mesh> load_cpu_mesh(const CompiledGraph& g, const graph::MeshDesc& md) {
     Result<scene::Mesh> mesh = md.file.empty() ? scene::generate_mesh(md.generator, md.args)
                                                : scene::load_mesh(g.desc.dir / md.file);
     if (!mesh) {
@@ -150,6 +151,37 @@ Result<GpuMesh> create_mesh(vk::Context& ctx, const CompiledGraph& g, const grap
         e.resource = md.name;
         return e;
     }
+    return mesh;
+}
+
+// generator = "bvh" | "triangles": the words of scene/scene_buffer.hpp over the named meshes.
+Result<std::vector<uint32_t>> generated_words(const graph::BufferDesc& d, const std::map<std::string, scene::Mesh>& meshes) {
+    std::vector<scene::SceneInput> in;
+    for (const auto& name : d.meshes) in.push_back({name, &meshes.at(name)});
+    auto words = scene::build_scene_buffer(in, d.generator == "bvh", d.leaf_size);
+    if (!words) return resource_error(words.error().message, d.keys.at("generator", d.loc), d.name);
+    if (auto s = graph::check_built_buffer_size(d, int64_t(words->size()) * 4); !s) return s.error();
+    return words;
+}
+
+// Initial contents from `data`: values as 32-bit words, the rest zero.
+std::vector<uint32_t> data_words(const graph::BufferDesc& d, VkDeviceSize bytes) {
+    std::vector<uint32_t> words(bytes / 4, 0);
+    for (size_t i = 0; i < d.data.size() && i < words.size(); ++i) {
+        if (d.data_type == "float") {
+            float f = static_cast<float>(d.data[i]);
+            std::memcpy(&words[i], &f, 4);
+        } else if (d.data_type == "int") {
+            int32_t v = static_cast<int32_t>(d.data[i]);
+            std::memcpy(&words[i], &v, 4);
+        } else {
+            words[i] = static_cast<uint32_t>(d.data[i]);
+        }
+    }
+    return words;
+}
+
+Result<GpuMesh> create_mesh(vk::Context& ctx, const CompiledGraph& g, const graph::MeshDesc& md, const scene::Mesh* mesh) {
     GpuMesh gm;
     size_t vb = mesh->vertices.size() * sizeof(scene::Vertex), ib = mesh->indices.size() * sizeof(uint32_t);
     gm.vertices = vk::create_buffer(ctx, std::max<size_t>(vb, 16), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
@@ -311,34 +343,36 @@ Result<GraphResources> create_resources(vk::Context& ctx, const CompiledGraph& g
         }
     }
 
+    // CPU meshes once: draws upload them, host-built buffers are built from them.
+    std::map<std::string, scene::Mesh> cpu_meshes;
+    for (const auto& md : g.desc.meshes) {
+        auto m = load_cpu_mesh(g, md);
+        if (!m) return m.error();
+        cpu_meshes.emplace(md.name, std::move(m.value()));
+    }
+
     for (const auto& d : g.desc.buffers) {
         GraphBuffer gb;
         gb.desc = &d;
-        auto size = graph::eval_scalar(d.size, env);
-        if (!size) {
-            Error e = size.error();
-            e.resource = d.name;
-            return e;
+        std::vector<uint32_t> words;
+        if (!d.generator.empty()) {
+            auto w = generated_words(d, cpu_meshes);
+            if (!w) return w.error();
+            words = std::move(w.value());
+        } else {
+            auto size = graph::eval_scalar(d.size, env);
+            if (!size) {
+                Error e = size.error();
+                e.resource = d.name;
+                return e;
+            }
+            words = data_words(d, (static_cast<VkDeviceSize>(*size) + 3) / 4 * 4);
         }
-        VkDeviceSize bytes = static_cast<VkDeviceSize>(*size);
-        bytes = (bytes + 3) / 4 * 4;
+        const VkDeviceSize bytes = words.size() * 4;
         VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |
                                    VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                                    VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
                                    VK_BUFFER_USAGE_INDEX_BUFFER_BIT;
-        // Initial contents: `data` values as 32-bit words, the rest zero.
-        std::vector<uint32_t> words(bytes / 4, 0);
-        for (size_t i = 0; i < d.data.size() && i < words.size(); ++i) {
-            if (d.data_type == "float") {
-                float f = static_cast<float>(d.data[i]);
-                std::memcpy(&words[i], &f, 4);
-            } else if (d.data_type == "int") {
-                int32_t v = static_cast<int32_t>(d.data[i]);
-                std::memcpy(&words[i], &v, 4);
-            } else {
-                words[i] = static_cast<uint32_t>(d.data[i]);
-            }
-        }
         vk::Buffer staging = vk::create_buffer(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
         std::memcpy(staging.mapped, words.data(), bytes);
         for (int k = 0; k < (d.history ? 2 : 1); ++k) {
@@ -361,7 +395,7 @@ Result<GraphResources> create_resources(vk::Context& ctx, const CompiledGraph& g
     }
 
     for (const auto& md : g.desc.meshes) {
-        auto m = create_mesh(ctx, g, md);
+        auto m = create_mesh(ctx, g, md, &cpu_meshes.at(md.name));
         if (!m) return m.error();
         R.meshes.emplace(md.name, std::move(m.value()));
     }

@@ -93,6 +93,11 @@ struct BufferDesc {
     std::string data_type = "float";  // ... as float | int | uint 32-bit values
     bool history = false;
     std::optional<CounterDesc> counter;
+    // Host-built contents (layout: scene/scene_gpu.hpp): "bvh" (nodes + triangles) or
+    // "triangles" over `meshes` of [meshes], in that order; the size comes from the build.
+    std::string generator;
+    std::vector<std::string> meshes;  // locations under "meshes.0", "meshes.1" ...
+    int leaf_size = 4;                // bvh: at most this many triangles per leaf (1..15)
     KeyLocs keys;
 };
 

@@ -49,7 +49,7 @@ std::string to_dot(const GraphDesc& g, const std::vector<PassIO>* io) {
     }
     for (const auto& b : g.buffers) {
         declared.insert(b.name);
-        std::string label = b.name + "\nbuffer " + size_text(b.size) + " B";
+        std::string label = b.name + "\nbuffer " + (b.generator.empty() ? size_text(b.size) + " B" : b.generator);
         s << "  " << q(b.name) << " [shape=ellipse, label=" << q(label) << ", style=" << (b.history ? "\"dashed,filled\"" : "filled")
           << ", fillcolor=\"#f3f3f3\"];\n";
     }

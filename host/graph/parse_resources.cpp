@@ -22,6 +22,10 @@ const std::vector<std::string> kImageGeneratorArgs = {"cells", "color_a", "color
 const std::vector<std::string> kMeshGenerators = {"plane", "cube", "sphere", "torus", "teapot"};
 const std::vector<std::string> kMeshArgs = {"size", "segments", "rings", "radius", "tube", "subdivisions"};
 
+// Host-built scene buffers (scene/scene_buffer.hpp); leaf sizes up to scene::kMaxLeafSize.
+const std::vector<std::string> kBufferGenerators = {"bvh", "triangles"};
+constexpr int kMaxLeafSize = 15;
+
 const std::vector<std::string> kAddress = {"repeat", "clamp", "mirror", "border"};
 
 bool contains(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
@@ -190,9 +194,42 @@ Status parse_counter(TableReader& r, BufferDesc& d) {
     return ok_status();
 }
 
+// generator = "bvh" | "triangles": contents and size come from the build over named meshes
+// (whose existence validation checks); every key that describes contents or size is refused.
+Status parse_generated_buffer(TableReader& r, BufferDesc& d) {
+    auto err = [&](const std::string& msg, const SourceLoc& where) { return r.error("buffer '" + d.name + "': " + msg, where); };
+    if (auto s = r.choice("generator", d.generator, kBufferGenerators); !s) return s;
+    for (const char* key : {"size", "data", "type", "clear", "history", "stride", "counter"})
+        if (r.has(key))
+            return err(std::string("'") + key + "' cannot be set on a generator buffer: its contents and size come from the build (generator = \"" +
+                           d.generator + "\")",
+                       r.key_loc(key));
+    const toml::node* m = r.get("meshes");
+    const toml::array* arr = m ? m->as_array() : nullptr;
+    if (!m) return err("generator = \"" + d.generator + "\" needs meshes = [\"name\", ...] naming [meshes]", r.value_loc("generator"));
+    if (!arr || arr->empty()) return r.type_error("meshes", "a non-empty array of mesh names");
+    for (size_t k = 0; k < arr->size(); ++k) {
+        const toml::node& e = *arr->get(k);
+        if (!e.is_string()) return err("meshes must be an array of mesh names; an element is " + type_name(e), r.loc_of(e));
+        std::string name = *e.value<std::string>();
+        if (contains(d.meshes, name)) return err("mesh '" + name + "' is listed twice in meshes", r.loc_of(e));
+        d.meshes.push_back(name);
+        d.keys.map["meshes." + std::to_string(k)] = r.loc_of(e);
+    }
+    if (auto s = r.integer("leaf_size", d.leaf_size, 1, kMaxLeafSize); !s) return s;
+    if (r.has("leaf_size") && d.generator != "bvh") return err("leaf_size applies to generator = \"bvh\"", r.key_loc("leaf_size"));
+    return r.finish();
+}
+
 Status parse_buffer(const toml::table& bt, const std::string& file, BufferDesc& d) {
     TableReader r(bt, file, "buffer '" + d.name + "'", &d.keys);
-    if (!r.has("size")) return r.error("buffer '" + d.name + "' needs size = bytes (a number or an expression)", d.loc);
+    if (r.has("generator")) return parse_generated_buffer(r, d);
+    if (!r.has("size"))
+        return r.error("buffer '" + d.name + "' needs size = bytes (a number or an expression) or generator = \"bvh\" | \"triangles\"", d.loc);
+    for (const char* key : {"meshes", "leaf_size"})
+        if (r.has(key))
+            return r.error("buffer '" + d.name + "': '" + key + "' describes a host-built buffer; add generator = \"bvh\" or \"triangles\" (and remove size)",
+                           r.key_loc(key));
     if (auto s = r.size("size", d.size); !s) return s;
     if (auto s = r.integer("stride", d.stride, 0, 1 << 20); !s) return s;
     if (r.has("clear")) {

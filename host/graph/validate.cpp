@@ -287,12 +287,26 @@ SizeEnv base_env(const GraphDesc& g, const ValidateOptions& opt) {
     return env;
 }
 
+// Host-built buffers (generator = "bvh" | "triangles") name the meshes they are built from.
+Status check_buffer_meshes(const GraphDesc& g, const DeclaredNames& n) {
+    for (const auto& b : g.buffers)
+        for (size_t k = 0; k < b.meshes.size(); ++k)
+            if (!g.find_mesh(b.meshes[k])) {
+                Error e = ref_error("buffer '" + b.name + "': mesh", b.meshes[k], b.keys.at("meshes." + std::to_string(k), b.loc), "",
+                                    n.meshes, "meshes");
+                e.resource = b.name;
+                return e;
+            }
+    return ok_status();
+}
+
 } // namespace
 
 Status validate_graph(const GraphDesc& g, const ValidateOptions& opt) {
     DeclaredNames names;
     if (auto s = check_names(g, names); !s) return s;
     if (auto s = check_images(g, names); !s) return s;
+    if (auto s = check_buffer_meshes(g, names); !s) return s;
     SizeEnv env = base_env(g, opt);
     if (auto s = validate_sizes(g, env, {}, {}); !s) return s;
     if (auto s = validate_passes(g, opt, names); !s) return s;

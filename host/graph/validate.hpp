@@ -26,6 +26,10 @@ Status validate_graph(const GraphDesc& g, const ValidateOptions& opt);
 // The same, then fills g.output with default_output(g) when [output] was absent.
 Status validate_graph(GraphDesc& g, const ValidateOptions& opt);
 
+// A host-built buffer (generator = "bvh" | "triangles") is sized by its build, so its size is
+// bounded when it is built, against the same limit as a `size` (error at its generator key).
+Status check_built_buffer_size(const BufferDesc& b, int64_t bytes);
+
 // The image shown and written when there is no [output]: walking the enabled passes from the
 // last, the first colour target of a raster pass (its resolve image when it has one) or the dst
 // image of a blit/copy; if no pass writes one (compute-only graphs), the last declared image

@@ -74,6 +74,7 @@ Status image_size(const GraphDesc& g, const ImageDesc& i, const SizeEnv& env, co
 }
 
 Status buffer_size(const BufferDesc& b, const SizeEnv& env, const Ctx& c) {
+    if (!b.generator.empty()) return ok_status();  // sized by its build (bounded when it is built)
     auto sz = eval_scalar(b.size, env);
     if (!sz) {
         Error e = sz.error();
@@ -154,6 +155,15 @@ Status pass_sizes(const PassDesc& p, const SizeEnv& env, const Ctx& c) {
 }
 
 } // namespace
+
+Status check_built_buffer_size(const BufferDesc& b, int64_t bytes) {
+    if (bytes <= kMaxBufferBytes) return ok_status();
+    Error e = make_error("buffer '" + b.name + "': the " + b.generator + " build needs " + human_bytes(double(bytes)) + " (limit " +
+                             human_bytes(double(kMaxBufferBytes)) + ")",
+                         b.keys.at("generator", b.loc));
+    e.resource = b.name;
+    return e;
+}
 
 Status validate_sizes(const GraphDesc& g, const SizeEnv& env, const std::string& context, const SourceLoc& context_loc) {
     Ctx c{context, context_loc};
