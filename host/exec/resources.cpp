@@ -155,6 +155,7 @@ Result<scene::Mesh> load_cpu_mesh(const CompiledGraph& g, const graph::MeshDesc&
 }
 
 // generator = "bvh" | "triangles": the words of scene/scene_buffer.hpp over the named meshes.
+static_assert(graph::BufferDesc::kMaxLeafSize == scene::kMaxLeafSize, "the parser's leaf_size range is the build's");
 Result<std::vector<uint32_t>> generated_words(const graph::BufferDesc& d, const std::map<std::string, scene::Mesh>& meshes) {
     std::vector<scene::SceneInput> in;
     for (const auto& name : d.meshes) in.push_back({name, &meshes.at(name)});

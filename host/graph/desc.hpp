@@ -97,7 +97,8 @@ struct BufferDesc {
     // "triangles" over `meshes` of [meshes], in that order; the size comes from the build.
     std::string generator;
     std::vector<std::string> meshes;  // locations under "meshes.0", "meshes.1" ...
-    int leaf_size = 4;                // bvh: at most this many triangles per leaf (1..15)
+    int leaf_size = 4;                // bvh: at most this many triangles per leaf (1..kMaxLeafSize)
+    static constexpr int kMaxLeafSize = 15;  // = scene::kMaxLeafSize (asserted in exec/resources.cpp)
     KeyLocs keys;
 };
 

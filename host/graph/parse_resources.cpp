@@ -22,9 +22,8 @@ const std::vector<std::string> kImageGeneratorArgs = {"cells", "color_a", "color
 const std::vector<std::string> kMeshGenerators = {"plane", "cube", "sphere", "torus", "teapot"};
 const std::vector<std::string> kMeshArgs = {"size", "segments", "rings", "radius", "tube", "subdivisions"};
 
-// Host-built scene buffers (scene/scene_buffer.hpp); leaf sizes up to scene::kMaxLeafSize.
+// Host-built scene buffers (scene/scene_buffer.hpp).
 const std::vector<std::string> kBufferGenerators = {"bvh", "triangles"};
-constexpr int kMaxLeafSize = 15;
 
 const std::vector<std::string> kAddress = {"repeat", "clamp", "mirror", "border"};
 
@@ -216,7 +215,7 @@ Status parse_generated_buffer(TableReader& r, BufferDesc& d) {
         d.meshes.push_back(name);
         d.keys.map["meshes." + std::to_string(k)] = r.loc_of(e);
     }
-    if (auto s = r.integer("leaf_size", d.leaf_size, 1, kMaxLeafSize); !s) return s;
+    if (auto s = r.integer("leaf_size", d.leaf_size, 1, BufferDesc::kMaxLeafSize); !s) return s;
     if (r.has("leaf_size") && d.generator != "bvh") return err("leaf_size applies to generator = \"bvh\"", r.key_loc("leaf_size"));
     return r.finish();
 }

@@ -12,6 +12,7 @@ namespace {
 
 // A leaf's first triangle is stored above the count bits of BvhNode::leaf.
 constexpr size_t kMaxTriangles = size_t(1) << (32 - gpu::kLeafCountBits);
+static_assert(kMaxLeafSize < (1 << gpu::kLeafCountBits), "a leaf's count must fit its bits");
 
 Status check_mesh(const SceneInput& in) {
     const Mesh& m = *in.mesh;
