@@ -20,7 +20,7 @@ Status check_binding_limits(const VkPhysicalDeviceLimits& lim, const std::string
                                      "), more than this device binds as a " + (uniform ? "uniform" : "storage") + " buffer: " +
                                      (uniform ? "maxUniformBufferRange" : "maxStorageBufferRange") + " = " + std::to_string(limit) +
                                      " bytes (" + graph::human_bytes(double(limit)) + ") on " + device,
-                                 d->keys.at("size", d->loc));
+                                 d->keys.at(d->generator.empty() ? "size" : "generator", d->loc));  // a built buffer has no size key
             e.pass = cp.desc->name;
             e.resource = d->name;
             e.hint = uniform ? "declare the block as a storage buffer (buffer { ... }), whose limit is higher"
