@@ -158,7 +158,7 @@ Status pass_sizes(const PassDesc& p, const SizeEnv& env, const Ctx& c) {
 
 Status check_built_buffer_size(const BufferDesc& b, int64_t bytes) {
     if (bytes <= kMaxBufferBytes) return ok_status();
-    Error e = make_error("buffer '" + b.name + "': the " + b.generator + " build needs " + human_bytes(double(bytes)) + " (limit " +
+    Error e = make_error("buffer '" + b.name + "': the " + b.generator + " build needs " + std::to_string(bytes) + " bytes (limit " +
                              human_bytes(double(kMaxBufferBytes)) + ")",
                          b.keys.at("generator", b.loc));
     e.resource = b.name;

@@ -49,6 +49,8 @@ TEST(SceneBufferParse, Refused) {
     EXPECT_EQ(e.loc.col, 51);
     e = fails("scene = { generator = \"bvh\", meshes = [\"teapot\"], history = true }");
     EXPECT_TRUE(has(e.message, "'history' cannot be set")) << e.format();
+    e = fails("scene = { generator = \"bvh\", meshes = [\"teapot\"], counter = { offset = 0, capacity = 4 } }");
+    EXPECT_TRUE(has(e.message, "'counter' cannot be set")) << e.format();
     e = fails("scene = { generator = \"bvh\" }");
     EXPECT_TRUE(has(e.message, "needs meshes = [")) << e.format();
     e = fails("scene = { generator = \"bvh\", meshes = [] }");
@@ -81,4 +83,16 @@ TEST(SceneBufferParse, UnknownMeshIsAValidationErrorAtTheName) {
     EXPECT_EQ(s.error().loc.col, 50);
     EXPECT_TRUE(has(s.error().hint, "floor"));
     EXPECT_EQ(s.error().resource, "scene");
+}
+
+TEST(SceneBufferParse, BuiltSizeIsBoundedAtTheGeneratorKey) {
+    auto g = parse("scene = { generator = \"bvh\", meshes = [\"teapot\"] }");
+    ASSERT_TRUE(g) << g.error().format();
+    const BufferDesc& b = *g->find_buffer("scene");
+    EXPECT_TRUE(check_built_buffer_size(b, int64_t(1) << 30));
+    Status s = check_built_buffer_size(b, (int64_t(1) << 30) + 16);
+    ASSERT_FALSE(s);
+    EXPECT_TRUE(has(s.error().message, "buffer 'scene': the bvh build needs 1073741840 bytes (limit 1.0 GiB)")) << s.error().format();
+    EXPECT_EQ(s.error().loc.line, 5);
+    EXPECT_EQ(s.error().loc.col, 23);
 }
