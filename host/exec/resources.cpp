@@ -119,8 +119,10 @@ void record_upload(VkCommandBuffer cb, PhysImage& pi, VkBuffer staging) {
     }
     // The final barrier's second scope covers every later command, in this and in later
     // submissions: frames need no further barrier to read the upload.
-    pi.state.write_stages = pi.state.read_stages = VK_PIPELINE_STAGE_2_NONE;
-    pi.state.write_access = VK_ACCESS_2_NONE;
+    for (auto& st : pi.state.sub) {
+        st.write_stages = st.read_stages = VK_PIPELINE_STAGE_2_NONE;
+        st.write_access = VK_ACCESS_2_NONE;
+    }
 }
 
 Status upload_pixels(vk::Context& ctx, GraphImage& gi, const image::Image& img) {
@@ -287,6 +289,7 @@ Result<GraphResources> create_resources(vk::Context& ctx, const CompiledGraph& g
             for (int k = 0; k < (d.history ? 2 : 1); ++k) {
                 auto pi = std::make_shared<PhysImage>();
                 pi->image = vk::Image(ctx, info);
+                pi->state = ImageState(info.mips, info.layers);
                 if (need.storage) {
                     VkImageViewCreateInfo vci{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
                                               .image = pi->image.handle(),
