@@ -219,7 +219,7 @@ Result<CompiledGraph> build_graph(const fs::path& preset_toml, const BuildOption
             if (u < 0) {
                 const graph::GroupDesc& gd = *g.groups[static_cast<size_t>(cp.group)].desc;
                 u = static_cast<int>(plan.size());
-                plan.push_back({"group '" + gd.name + "'", gd.loc, {}, {}});
+                plan.push_back({gd.name, gd.loc, {}, {}, true});
                 unit_group.push_back(cp.group);
                 unit_pass.push_back(i);
             }

@@ -247,13 +247,15 @@ Result<std::vector<size_t>> order_passes(const std::vector<PlanPass>& passes) {
 
     Error e = make_error("the passes form a cycle: no order satisfies what they read and write",
                          cycle.empty() ? SourceLoc{} : passes[cycle.front()].loc);
+    auto label = [&](size_t i) { return std::string(passes[i].group ? "group '" : "pass '") + passes[i].name + "'"; };
     if (!cycle.empty()) {
-        e.pass = passes[cycle.front()].name;
+        if (!passes[cycle.front()].group) e.pass = passes[cycle.front()].name;
         for (size_t k = 0; k < cycle.size(); ++k) {
             size_t a = cycle[k], b = cycle[(k + 1) % cycle.size()];
-            e.notes.push_back("pass '" + passes[b].name + "' (" + passes[b].loc.str() +
-                              ") needs '" + why[{a, b}] + "' from pass '" + passes[a].name + "'");
+            e.notes.push_back(label(b) + " (" + passes[b].loc.str() + ") needs '" + why[{a, b}] + "' from " + label(a));
         }
+        if (std::any_of(cycle.begin(), cycle.end(), [&](size_t i) { return passes[i].group; }))
+            e.notes.push_back("a group runs as one unit: a pass cannot sit between two of its members");
     }
     e.hint = "use a history image (history = true, read as <name>_prev) to read last frame's result";
     return e;

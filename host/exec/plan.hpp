@@ -109,6 +109,7 @@ struct PlanPass {
     std::string name;
     SourceLoc loc;
     std::vector<std::string> reads, writes;
+    bool group = false;  // a [[group]] planned as one unit (messages say "group 'name'")
 };
 
 // Execution order. Passes run in file order unless a pass reads what a later-declared pass

@@ -78,7 +78,7 @@ struct Needs {
     bool sampled = false, storage = false, attachment = false;
 };
 
-Needs needs_of(const CompiledGraph& g, const std::string& name) {
+Needs direct_needs_of(const CompiledGraph& g, const std::string& name) {
     Needs n;
     auto same = [&](const std::string& other) {
         if (other == name) return true;
@@ -96,6 +96,23 @@ Needs needs_of(const CompiledGraph& g, const std::string& name) {
             if (same(t.image) || same(t.resolve)) n.attachment = true;
         if (cp.desc->depth && same(cp.desc->depth->target.image)) n.attachment = true;
     }
+    return n;
+}
+
+// An image in a swap pair (a pass's or a group's) takes its partner's role every other
+// iteration, so it needs every usage the partner has.
+Needs needs_of(const CompiledGraph& g, const std::string& name) {
+    Needs n = direct_needs_of(g, name);
+    auto partner_of = [&](const std::vector<std::string>& pairs) {
+        for (size_t k = 0; k + 1 < pairs.size(); k += 2) {
+            const std::string* other = pairs[k] == name ? &pairs[k + 1] : pairs[k + 1] == name ? &pairs[k] : nullptr;
+            if (!other) continue;
+            Needs o = direct_needs_of(g, *other);
+            n.sampled |= o.sampled, n.storage |= o.storage, n.attachment |= o.attachment;
+        }
+    };
+    for (const auto& p : g.desc.passes) partner_of(p.swap);
+    for (const auto& gr : g.desc.groups) partner_of(gr.swap);
     return n;
 }
 

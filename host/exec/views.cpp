@@ -32,7 +32,7 @@ namespace {
 struct Use {
     std::string image;  // the image owning the memory
     Sel sel;
-    bool write = false, view = false;
+    bool write = false, view = false, layered = false;
     std::string what;   // "target 'hiz'", "binding 'src'"
     SourceLoc loc;
 };
@@ -136,11 +136,11 @@ struct Resolver {
                 if (a.image != b.image || !(a.write || b.write) || !(a.view || b.view) || !overlap(a.sel, b.sel)) continue;
                 const Use& v = a.view ? a : b;
                 const Use& o = a.view ? b : a;
-                auto level = [](const Sel& s) {
-                    return (s.mip < 0 ? std::string("every level") : "level " + std::to_string(s.mip)) +
-                           (s.layer < 0 ? "" : " layer " + std::to_string(s.layer));
+                auto level = [](const Use& u) {
+                    return (u.sel.mip < 0 ? std::string("every level") : "level " + std::to_string(u.sel.mip)) +
+                           (u.sel.layer < 0 || !u.layered ? "" : " layer " + std::to_string(u.sel.layer));
                 };
-                Error e = err("image '" + v.image + "': " + v.what + " (" + level(v.sel) + ") and " + o.what + " (" + level(o.sel) +
+                Error e = err("image '" + v.image + "': " + v.what + " (" + level(v) + ") and " + o.what + " (" + level(o) +
                                   ") touch the same level" + at_run() + ", and one of them writes it",
                               v.loc, v.image);
                 e.notes.push_back(o.what + " is at " + o.loc.str());
@@ -160,18 +160,22 @@ struct Resolver {
             const graph::ImageDesc* d = base_image(n);
             return d ? d->name : n;
         };
+        auto layered = [&](const std::string& n) {
+            const graph::ImageDesc* d = base_image(n);
+            return d && layers_of(*d) > 1;
+        };
         for (const auto& t : pd.targets) {
             auto s = attachment(t);
             if (!s) return s.error();
             rv.targets.push_back(*s);
-            uses.push_back({owner(t.image), *s, true, false, "target '" + t.image + "'", t.loc});
+            uses.push_back({owner(t.image), *s, true, false, layered(t.image), "target '" + t.image + "'", t.loc});
         }
         if (pd.depth) {
             auto s = attachment(pd.depth->target);
             if (!s) return s.error();
             rv.depth = *s;
-            uses.push_back({owner(pd.depth->target.image), *s, pd.depth->write, false, "depth '" + pd.depth->target.image + "'",
-                            pd.depth->target.loc});
+            uses.push_back({owner(pd.depth->target.image), *s, pd.depth->write, false, layered(pd.depth->target.image),
+                            "depth '" + pd.depth->target.image + "'", pd.depth->target.loc});
         }
         for (const auto& b : cp.bindings) {
             auto s = view(b);
@@ -180,7 +184,7 @@ struct Resolver {
             if (b.kind != BoundResource::Kind::image) continue;
             bool w = b.access == Access::storage_write || b.access == Access::storage_read_write;
             SourceLoc l = pd.keys.at("bind." + b.binding.name, pd.loc);
-            uses.push_back({owner(b.resource), *s, w, b.view != nullptr, "binding '" + b.binding.name + "'", l});
+            uses.push_back({owner(b.resource), *s, w, b.view != nullptr, layered(b.resource), "binding '" + b.binding.name + "'", l});
         }
         if (auto st = same_level(uses); !st) return st.error();
         return rv;

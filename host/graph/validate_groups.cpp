@@ -25,6 +25,7 @@ Status validate_groups(const GraphDesc& g, const DeclaredNames& names) {
             if (!p) {
                 Error e = ref_error("pass", n, l, "", pass_names, "passes");
                 e.message = "group '" + gr.name + "': " + e.message;
+                e.resource.clear();
                 if (std::any_of(g.groups.begin(), g.groups.end(), [&](const GroupDesc& o) { return o.name == n; }))
                     e.hint = "'" + n + "' is a group; groups do not nest: list its passes here instead";
                 return e;
