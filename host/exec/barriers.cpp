@@ -39,7 +39,6 @@ void BarrierBatch::flush(VkCommandBuffer cb) {
                         .imageMemoryBarrierCount = static_cast<uint32_t>(images.size()),
                         .pImageMemoryBarriers = images.data()};
     vkCmdPipelineBarrier2(cb, &di);
-    recorded += images.size() + buffers.size();
     images.clear();
     buffers.clear();
 }

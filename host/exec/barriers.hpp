@@ -15,7 +15,6 @@ struct BarrierBatch {
     std::vector<VkBufferMemoryBarrier2> buffers;
 
     void add(const Barrier& b, VkImage image, const VkImageSubresourceRange& range);
-    size_t recorded = 0;  // barriers flushed so far (image and buffer), for measurements
     void add(const Barrier& b, VkBuffer buffer);
     void flush(VkCommandBuffer cb);  // records one vkCmdPipelineBarrier2 and empties the batch
 };
