@@ -25,8 +25,15 @@ const std::vector<std::string> kBlendModes = {"off", "alpha", "premultiplied", "
 Status parse_layer(TableReader& r, int& layer, SizeExpr* expr = nullptr) {
     const toml::node* l = r.get("layer");
     if (!l) return ok_status();
-    if (expr && l->is_string() && *l->value<std::string>() != "all" && *l->value<std::string>() != "iteration")
+    if (expr && l->is_string() && *l->value<std::string>() != "all" && *l->value<std::string>() != "iteration") {
+        // An expression uses an operator or a function ("iteration / 6", "min(iteration, 3)");
+        // a lone word such as "every" is a misspelt keyword, refused here with the choices.
+        const std::string v = *l->value<std::string>();
+        if (v.find_first_of("+-*/%()0123456789") == std::string::npos)
+            return r.error(r.what() + ": layer \"" + v + "\" is not \"all\", \"iteration\" or an expression such as \"iteration / 6\"",
+                           r.value_loc("layer"));
         return r.size("layer", *expr);
+    }
     if (l->is_integer()) {
         int64_t v = *l->value<int64_t>();
         if (v < 0 || v > 2047) return r.error(r.what() + ": layer must be 0..2047, \"all\" or \"iteration\"", r.loc_of(*l));
@@ -77,8 +84,9 @@ Status parse_view(const toml::table& t, TableReader& owner, ViewRef& v) {
     if (auto s = r.size("layer", v.layer); !s) return s;
     for (const SizeExpr* e : {&v.mip, &v.layer})
         if (e->literal.size() > 1) return r.error(r.what() + ": mip and layer are one number (or an expression), not a vector", e->loc);
+    if (auto s = r.finish(); !s) return s;  // a misspelt key first: it is why nothing is selected
     if (v.mip.empty() && v.layer.empty()) return r.error(r.what() + " selects nothing: give mip and/or layer, or bind the name as a string", v.loc);
-    return r.finish();
+    return ok_status();
 }
 
 Status parse_blend_one(const toml::node& n, TableReader& owner, BlendDesc& b) {
