@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 namespace fs = std::filesystem;
 
@@ -23,14 +24,16 @@ namespace {
 
 struct Rendered {
     std::unique_ptr<exec::Executor> ex;
-    std::map<std::string, image::Image> cache;
+    std::map<std::tuple<std::string, int, int>, image::Image> cache;
     std::map<std::string, std::vector<uint32_t>> buffers;
-    Result<const image::Image*> get(const std::string& name) {
-        auto it = cache.find(name);
+    // One level and layer of an image (tests read any mip/layer: `mip = 3`, `layer = 2`).
+    Result<const image::Image*> get(const std::string& name, int mip = 0, int layer = 0) {
+        auto key = std::make_tuple(name, mip, layer);
+        auto it = cache.find(key);
         if (it != cache.end()) return &it->second;
-        auto img = ex->read(name);
+        auto img = ex->read(name, mip, layer);
         if (!img) return img.error();
-        return &cache.emplace(name, std::move(img.value())).first->second;
+        return &cache.emplace(key, std::move(img.value())).first->second;
     }
     Result<const std::vector<uint32_t>*> get_buffer(const std::string& name) {
         auto it = buffers.find(name);
@@ -94,7 +97,7 @@ std::optional<CheckResult> render_property(vk::Context& ctx, const fs::path& tom
             r.detail = label + ": " + other.error().message;
             return false;
         }
-        auto o = other->get(subject);
+        auto o = other->get(subject, t.mip, t.layer);
         if (!o) {
             r.detail = label + ": " + o.error().message;
             return false;
@@ -150,7 +153,7 @@ std::optional<CheckResult> render_property(vk::Context& ctx, const fs::path& tom
                 r.detail = other.error().message;
                 return r;
             }
-            auto o = other->get(subject);
+            auto o = other->get(subject, t.mip, t.layer);
             if (!o) {
                 r.detail = o.error().message;
                 return r;
@@ -218,7 +221,7 @@ std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml,
             cr.error = rendered.error().format();
         } else {
             std::string subject = t.pass.empty() ? rendered->ex->graph().desc.output : t.pass;
-            auto img = rendered->get(subject);
+            auto img = rendered->get(subject, t.mip, t.layer);
             if (!img) {
                 cr.error = img.error().format();
             } else {
@@ -241,7 +244,10 @@ std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml,
                         continue;
                     }
                     std::string which = str(c.args, "pass", subject);
-                    auto target = rendered->get(which);
+                    // A check on the case's own image defaults to the case's level and layer.
+                    bool own = which == subject;
+                    auto target = rendered->get(which, static_cast<int>(num(c.args, "mip", own ? t.mip : 0)),
+                                                static_cast<int>(num(c.args, "layer", own ? t.layer : 0)));
                     if (!target) {
                         cr.checks.push_back({c.kind, false, target.error().message, {}, {}, {}});
                         continue;

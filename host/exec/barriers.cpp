@@ -44,7 +44,13 @@ void BarrierBatch::flush(VkCommandBuffer cb) {
 }
 
 void require(BarrierBatch& batch, PhysImage& img, const Usage& usage, bool discard) {
-    if (auto b = transition(img.state, usage, discard)) batch.add(*b, img.image.handle(), img.image.full_range());
+    require(batch, img, img.state.all(), usage, discard);
+}
+
+void require(BarrierBatch& batch, PhysImage& img, const SubRange& range, const Usage& usage, bool discard) {
+    for (const auto& rb : transition(img.state, range, usage, discard))
+        batch.add(rb.barrier, img.image.handle(),
+                  {img.image.aspect(), rb.range.mip, rb.range.mips, rb.range.layer, rb.range.layers});
 }
 
 void require(BarrierBatch& batch, PhysBuffer& buf, const Usage& usage) {
@@ -55,19 +61,15 @@ void record_mip_chain(VkCommandBuffer cb, PhysImage& img, const Usage& final_usa
     const auto& info = img.image.info();
     VkImageAspectFlags aspect = img.image.aspect();
     BarrierBatch batch;
-    auto range = [&](uint32_t level) { return VkImageSubresourceRange{aspect, level, 1, 0, info.layers}; };
+    auto level = [&](uint32_t l) { return SubRange{l, 1, 0, info.layers}; };
     // Level 0 becomes the first source; the others start as destinations (old contents dropped).
-    std::vector<ResourceState> level(info.mips, img.state);
-    if (auto b = transition(level[0], usage_of(Access::transfer_src, 0))) batch.add(*b, img.image.handle(), range(0));
-    for (uint32_t i = 1; i < info.mips; ++i)
-        if (auto b = transition(level[i], usage_of(Access::transfer_dst, 0), true))
-            batch.add(*b, img.image.handle(), range(i));
+    require(batch, img, level(0), usage_of(Access::transfer_src, 0));
+    require(batch, img, {1, info.mips - 1, 0, info.layers}, usage_of(Access::transfer_dst, 0), true);
     batch.flush(cb);
     auto dim = [](uint32_t v, uint32_t l) { return static_cast<int32_t>(std::max(1u, v >> l)); };
     for (uint32_t i = 1; i < info.mips; ++i) {
         if (i > 1) {
-            if (auto b = transition(level[i - 1], usage_of(Access::transfer_src, 0)))
-                batch.add(*b, img.image.handle(), range(i - 1));
+            require(batch, img, level(i - 1), usage_of(Access::transfer_src, 0));
             batch.flush(cb);
         }
         VkImageBlit blit{
@@ -78,17 +80,9 @@ void record_mip_chain(VkCommandBuffer cb, PhysImage& img, const Usage& final_usa
         vkCmdBlitImage(cb, img.image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, img.image.handle(),
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
     }
-    // Every level to the final state; the whole-image state then describes all of them.
-    for (uint32_t i = 0; i < info.mips; ++i)
-        if (auto b = transition(level[i], final_usage)) batch.add(*b, img.image.handle(), range(i));
+    // Every level to the final state (levels that ended in the same state share one barrier).
+    require(batch, img, img.state.all(), final_usage);
     batch.flush(cb);
-    img.state = level[info.mips - 1];
-    // Reads since the last write differ per level; the union keeps later barriers conservative.
-    for (const auto& l : level) {
-        img.state.read_stages |= l.read_stages;
-        img.state.write_stages |= l.write_stages;
-        img.state.write_access |= l.write_access;
-    }
 }
 
 void transfer_to_host(VkCommandBuffer cb) {

@@ -19,8 +19,10 @@ struct BarrierBatch {
     void flush(VkCommandBuffer cb);  // records one vkCmdPipelineBarrier2 and empties the batch
 };
 
-// Brings `img` to the state `usage` needs, adding the derived barrier (if any) to `batch`.
+// Brings `range` of `img` (default: all of it) to the state `usage` needs, adding the derived
+// barriers (one per rectangle of subresources in the same state; none where nothing changes).
 void require(BarrierBatch& batch, PhysImage& img, const Usage& usage, bool discard = false);
+void require(BarrierBatch& batch, PhysImage& img, const SubRange& range, const Usage& usage, bool discard = false);
 void require(BarrierBatch& batch, PhysBuffer& buf, const Usage& usage);
 
 // Makes transfer writes visible to host reads after the submission's fence (readbacks).

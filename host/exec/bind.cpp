@@ -151,7 +151,13 @@ Status bind_pass(const graph::GraphDesc& desc, CompiledPass& cp) {
             if (!img->alias.empty())
                 if (const graph::ImageDesc* target = desc.find_image(img->alias)) img = target;
             const vk::FormatInfo* fi = vk::find_format(img->format);
-            if (!dim_matches(b, *img))
+            if (auto v = pd.bind_views.find(b.name); v != pd.bind_views.end()) br.view = &v->second;
+            // A view of one layer is a plain 2D image to the shader (sampler2D, image2D).
+            const bool one_layer = br.view && !br.view->layer.empty() && img->kind != ImageKind::tex3d;
+            if (one_layer && (b.dim != shader::ImageDim::d2 || b.arrayed))
+                return err("'" + name + "' is bound to one layer of image '" + img->name +
+                               "' (bind view with layer): declare it as a 2D sampler/image, not an array or cube", name);
+            if (!one_layer && !dim_matches(b, *img))
                 return err("'" + name + "' is a " + kind_name(img->kind) +
                                " image but the shader declares a different dimension", name);
             if (fi && b.is_integer != fi->is_integer)
@@ -219,7 +225,9 @@ Status bind_pass(const graph::GraphDesc& desc, CompiledPass& cp) {
     // Feedback loop: sampling an image while rendering into it is undefined behaviour.
     auto sampled = [&](const std::string& n) {
         return std::any_of(cp.bindings.begin(), cp.bindings.end(), [&](const BoundResource& br) {
-            return br.kind == BoundResource::Kind::image && br.access == Access::sampled &&
+            // A binding of one level is checked per iteration against the levels rendered
+            // (exec/views.cpp): reading level i while rendering level i + 1 is legal.
+            return br.kind == BoundResource::Kind::image && br.access == Access::sampled && !br.view &&
                    underlying(desc, br.resource) == underlying(desc, n);
         });
     };

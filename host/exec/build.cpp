@@ -2,6 +2,7 @@
 
 #include "exec/bind.hpp"
 #include "exec/preamble.hpp"
+#include "exec/views.hpp"
 #include "graph/parse.hpp"
 #include "graph/sizeexpr.hpp"
 #include "graph/validate.hpp"
@@ -173,17 +174,80 @@ Result<CompiledGraph> build_graph(const fs::path& preset_toml, const BuildOption
     std::sort(g.dependencies.begin(), g.dependencies.end());
     g.dependencies.erase(std::unique(g.dependencies.begin(), g.dependencies.end()), g.dependencies.end());
 
-    std::vector<PlanPass> plan;
-    for (const auto& cp : g.passes) {
-        if (!cp.desc->enabled) {
-            plan.push_back({cp.desc->name, cp.desc->loc, {}, {}});
-            continue;
+    // Groups: each member knows its group; the group's count is evaluated like a pass's repeat.
+    for (size_t k = 0; k < g.desc.groups.size(); ++k) {
+        const graph::GroupDesc& gd = g.desc.groups[k];
+        CompiledGroup cg;
+        cg.desc = &gd;
+        if (!gd.repeat.empty()) {
+            auto r = graph::eval_scalar(gd.repeat, env);
+            if (!r) return r.error();
+            cg.repeat = static_cast<int>(*r);  // 1..4096: checked with the sizes
         }
-        plan.push_back({cp.desc->name, cp.desc->loc, cp.io.reads, cp.io.writes});
+        for (const auto& name : gd.passes)
+            for (size_t i = 0; i < g.passes.size(); ++i)
+                if (g.passes[i].desc->name == name) {
+                    cg.members.push_back(i);
+                    g.passes[i].group = static_cast<int>(k);
+                }
+        g.groups.push_back(std::move(cg));
     }
+    for (auto& cp : g.passes) {
+        int group_repeat = cp.group >= 0 ? g.groups[static_cast<size_t>(cp.group)].repeat : 1;
+        if (int64_t(group_repeat) * cp.repeat > 65536) {
+            Error e = make_error("pass '" + cp.desc->name + "' would run " + std::to_string(int64_t(group_repeat) * cp.repeat) +
+                                     " times a frame (its repeat " + std::to_string(cp.repeat) + " x its group's " +
+                                     std::to_string(group_repeat) + "); the limit is 65536",
+                                 cp.desc->repeat.loc.known() ? cp.desc->repeat.loc : cp.desc->loc);
+            e.pass = cp.desc->name;
+            return e;
+        }
+        if (auto st = resolve_views(g.desc, env, cp, group_repeat); !st) return st.error();
+    }
+
+    // The planner sees a group as one unit: the union of its members' reads and writes, at the
+    // position of its first member; its members then run contiguously in the listed order.
+    std::vector<PlanPass> plan;
+    std::vector<int> unit_group;  // per plan unit: the group it stands for, or -1
+    std::vector<size_t> unit_pass;
+    std::vector<int> group_unit(g.groups.size(), -1);
+    for (size_t i = 0; i < g.passes.size(); ++i) {
+        const CompiledPass& cp = g.passes[i];
+        PlanPass* unit = nullptr;
+        if (cp.group >= 0) {
+            int& u = group_unit[static_cast<size_t>(cp.group)];
+            if (u < 0) {
+                const graph::GroupDesc& gd = *g.groups[static_cast<size_t>(cp.group)].desc;
+                u = static_cast<int>(plan.size());
+                plan.push_back({gd.name, gd.loc, {}, {}, true});
+                unit_group.push_back(cp.group);
+                unit_pass.push_back(i);
+            }
+            unit = &plan[static_cast<size_t>(u)];
+        } else {
+            plan.push_back({cp.desc->name, cp.desc->loc, {}, {}});
+            unit_group.push_back(-1);
+            unit_pass.push_back(i);
+            unit = &plan.back();
+        }
+        if (!cp.desc->enabled) continue;
+        unit->reads.insert(unit->reads.end(), cp.io.reads.begin(), cp.io.reads.end());
+        unit->writes.insert(unit->writes.end(), cp.io.writes.begin(), cp.io.writes.end());
+    }
+    // A group's swap partners trade roles every iteration: the group reads and writes both.
+    for (size_t k = 0; k < g.groups.size(); ++k)
+        if (group_unit[k] >= 0)
+            for (const auto& n : g.groups[k].desc->swap) {
+                plan[static_cast<size_t>(group_unit[k])].reads.push_back(n);
+                plan[static_cast<size_t>(group_unit[k])].writes.push_back(n);
+            }
     auto order = order_passes(plan);
     if (!order) return order.error();
-    g.order = std::move(order.value());
+    for (size_t u : *order) {
+        if (unit_group[u] < 0) g.order.push_back(unit_pass[u]);
+        else
+            for (size_t m : g.groups[static_cast<size_t>(unit_group[u])].members) g.order.push_back(m);
+    }
     return g;
 }
 

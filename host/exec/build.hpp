@@ -32,6 +32,20 @@ struct BoundResource {
     Kind kind = Kind::image;
     std::string resource;  // graph image/buffer name (for *_prev: the history image's name)
     Access access = Access::sampled;
+    const graph::ViewRef* view = nullptr;  // bind = { name = { image, mip, layer } }: one level/layer
+};
+
+// The level and layer a use of an image selects in one run of a pass: -1 = every level / layer.
+struct Sel {
+    int mip = -1, layer = -1;
+};
+
+// The selections of one run: per colour target, the depth attachment, and per binding (parallel
+// to CompiledPass::bindings).
+struct RunViews {
+    std::vector<Sel> targets;
+    Sel depth;
+    std::vector<Sel> bindings;
 };
 
 struct CompiledPass {
@@ -39,7 +53,18 @@ struct CompiledPass {
     shader::Program program;                // empty for transfer kinds
     std::vector<BoundResource> bindings;
     graph::PassIO io;                       // names read / written (for the planner and dot)
+    int repeat = 1;                         // its own repeat
+    int group = -1;                         // index into CompiledGraph::groups, -1 = none
+    // Per run (group_iteration * repeat + iteration): mip/layer expressions evaluated and
+    // checked at build time (exec/views.cpp), so recording only looks them up.
+    std::vector<RunViews> runs;
+};
+
+// A [[group]]: members (indices into passes) recorded in the listed order `repeat` times.
+struct CompiledGroup {
+    const graph::GroupDesc* desc = nullptr;
     int repeat = 1;
+    std::vector<size_t> members;
 };
 
 struct CompiledGraph {
@@ -47,7 +72,9 @@ struct CompiledGraph {
     std::array<int, 2> view{640, 360};
     ParamLayout param_layout;
     std::vector<CompiledPass> passes;  // same order as desc.passes
-    std::vector<size_t> order;         // execution order (indices into passes)
+    std::vector<CompiledGroup> groups;  // same order as desc.groups
+    // Execution order (indices into passes); a group's members are contiguous, in listed order.
+    std::vector<size_t> order;
     std::vector<std::filesystem::path> dependencies;  // every file read (toml, shaders, includes, images)
     std::vector<std::filesystem::path> search_dirs;   // shader lookup: overlays, preset, passes/
 };

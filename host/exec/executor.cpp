@@ -70,8 +70,10 @@ Result<std::unique_ptr<Executor>> Executor::create(vk::Context& ctx, CompiledGra
         auto pp = create_pass_pipeline(ctx, g, cp, ex->res_, cache, &reused);
         if (!pp) return pp.error();
         if (!reused && (*pp)->pipeline) ex->rebuilt_.push_back(cp.desc->name);
-        for (const auto& b : cp.program.reflection.bindings) counts[descriptor_type(b.type)] += b.count * cp.repeat;
-        max_sets += static_cast<uint32_t>((*pp)->set_layouts.size()) * cp.repeat;
+        // One set per run: its own repeat times its group's.
+        const uint32_t runs = static_cast<uint32_t>(cp.runs.size());
+        for (const auto& b : cp.program.reflection.bindings) counts[descriptor_type(b.type)] += b.count * runs;
+        max_sets += static_cast<uint32_t>((*pp)->set_layouts.size()) * runs;
         ex->pipelines_.push_back(std::move(pp.value()));
     }
     ctx.set_label("");
@@ -255,22 +257,52 @@ Status Executor::record_frame(VkCommandBuffer cb, const FrameInput&) {
     // Passes with `enabled = "expr"` follow the current param values (the panel changes them);
     // the environment is built only in frames that have such a pass.
     std::optional<graph::SizeEnv> env;
-    for (size_t i : g.order) {
-        const CompiledPass& cp = g.passes[i];
-        ctx_.set_label("pass '" + cp.desc->name + "'");
-        if (timestamps_)
-            vkCmdWriteTimestamp2(cb, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, queries_, static_cast<uint32_t>(2 * i));
+    auto runs_now = [&](const CompiledPass& cp) {
         bool on = cp.desc->enabled;
         if (on && !cp.desc->enabled_when.empty()) {
             if (!env) env = size_env(g.desc, g.view);
             auto v = graph::eval_scalar(cp.desc->enabled_when, *env);
             on = v && *v != 0;  // evaluated at build time too, so an error here cannot happen
         }
-        const bool skip = cp.desc->bake && !run_baked_;  // baked: its images still hold the result
-        for (int it = 0; on && !skip && it < cp.repeat; ++it)
+        return on && !(cp.desc->bake && !run_baked_);  // baked: its images still hold the result
+    };
+    auto stamp = [&](VkPipelineStageFlags2 stage, size_t query) {
+        if (timestamps_) vkCmdWriteTimestamp2(cb, stage, queries_, static_cast<uint32_t>(query));
+    };
+    for (size_t i : g.order) {
+        const CompiledPass& cp = g.passes[i];
+        if (cp.group >= 0) {
+            // A group runs from its first member: every member in listed order, `repeat` times.
+            // Its GPU time is reported on the first member (the others read 0).
+            const CompiledGroup& gr = g.groups[static_cast<size_t>(cp.group)];
+            if (i != gr.members.front()) continue;
+            ctx_.set_label("group '" + gr.desc->name + "'");
+            stamp(VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, 2 * i);
+            std::vector<char> on;
+            for (size_t m : gr.members) on.push_back(runs_now(g.passes[m]));
+            for (int gi = 0; gi < gr.repeat; ++gi)
+                for (size_t k = 0; k < gr.members.size(); ++k) {
+                    if (!on[k]) continue;
+                    const size_t m = gr.members[k];
+                    ctx_.set_label("pass '" + g.passes[m].desc->name + "' (group '" + gr.desc->name + "' iteration " +
+                                   std::to_string(gi) + ")");
+                    for (int it = 0; it < g.passes[m].repeat; ++it)
+                        if (auto s = record_pass(cb, m, it, gi); !s) return s;
+                }
+            stamp(VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, 2 * i + 1);
+            for (size_t m : gr.members)
+                if (m != i) {
+                    stamp(VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, 2 * m);
+                    stamp(VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, 2 * m + 1);
+                }
+            continue;
+        }
+        ctx_.set_label("pass '" + cp.desc->name + "'");
+        stamp(VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, 2 * i);
+        const bool on = runs_now(cp);
+        for (int it = 0; on && it < cp.repeat; ++it)
             if (auto s = record_pass(cb, i, it); !s) return s;
-        if (timestamps_)
-            vkCmdWriteTimestamp2(cb, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, queries_, static_cast<uint32_t>(2 * i + 1));
+        stamp(VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, 2 * i + 1);
     }
     record_counter_reads(cb);
     return ok_status();

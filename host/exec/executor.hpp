@@ -105,7 +105,8 @@ class Executor {
     explicit Executor(vk::Context& ctx) : ctx_(ctx) {}
     struct Impl;
     Status record_frame(VkCommandBuffer cb, const FrameInput& in);
-    Status record_pass(VkCommandBuffer cb, size_t pass, int iteration);
+    // One run of a pass: its own iteration and, in a [[group]], the group's iteration.
+    Status record_pass(VkCommandBuffer cb, size_t pass, int iteration, int group_iteration = 0);
     Status create_counters();                    // buffer_readback.cpp
     void record_counter_reads(VkCommandBuffer cb);  // at the end of a frame
     void collect_counters();                       // after its fence

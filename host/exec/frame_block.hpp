@@ -64,7 +64,7 @@ struct PushBlock {
     int32_t iteration;  // 0 .. count-1
     int32_t count;      // the pass's repeat count
     int32_t layer;      // layer/face being rendered (== iteration for layer = "iteration")
-    int32_t pad;
+    int32_t group_iteration;  // the [[group]]'s iteration (0 outside a group)
 };
 static_assert(sizeof(PushBlock) == 16);
 
@@ -72,11 +72,12 @@ inline constexpr const char* kPushBlockGlsl = R"(layout(push_constant) uniform P
     int iteration;
     int count;
     int layer;
-    int pad_;
+    int group_iteration;
 } pl_push;
 #define pl_iteration pl_push.iteration
 #define pl_iteration_count pl_push.count
 #define pl_layer pl_push.layer
+#define pl_group_iteration pl_push.group_iteration
 )";
 
 } // namespace pl::exec

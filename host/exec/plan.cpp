@@ -124,6 +124,39 @@ std::optional<Barrier> transition(ResourceState& s, const Usage& next, bool disc
     return b;
 }
 
+std::vector<RangeBarrier> transition(ImageState& s, const SubRange& range, const Usage& next, bool discard) {
+    std::vector<RangeBarrier> out;
+    std::vector<RangeBarrier> prev_level;  // the runs of the previous level, to merge levels
+    size_t prev_start = 0;                 // where prev_level's entries start in `out`
+    for (uint32_t m = range.mip; m < range.mip + range.mips; ++m) {
+        std::vector<RangeBarrier> runs;
+        for (uint32_t l = range.layer; l < range.layer + range.layers; ++l) {
+            auto b = transition(s.at(m, l), next, discard);
+            if (!b) continue;
+            if (!runs.empty() && runs.back().barrier == *b && runs.back().range.layer + runs.back().range.layers == l)
+                ++runs.back().range.layers;
+            else
+                runs.push_back({*b, {m, 1, l, 1}});
+        }
+        auto same_runs = [&] {
+            if (runs.size() != prev_level.size() || runs.empty()) return false;
+            for (size_t k = 0; k < runs.size(); ++k)
+                if (!(runs[k].barrier == prev_level[k].barrier) || runs[k].range.layer != prev_level[k].range.layer ||
+                    runs[k].range.layers != prev_level[k].range.layers)
+                    return false;
+            return out[prev_start].range.mip + out[prev_start].range.mips == m;
+        };
+        if (same_runs()) {
+            for (size_t k = 0; k < runs.size(); ++k) ++out[prev_start + k].range.mips;
+        } else {
+            prev_start = out.size();
+            out.insert(out.end(), runs.begin(), runs.end());
+        }
+        prev_level = std::move(runs);
+    }
+    return out;
+}
+
 Result<std::vector<size_t>> order_passes(const std::vector<PlanPass>& passes) {
     const size_t n = passes.size();
     // edges[a] = set of b that must run after a; why[(a,b)] = the resource that links them.
@@ -214,13 +247,15 @@ Result<std::vector<size_t>> order_passes(const std::vector<PlanPass>& passes) {
 
     Error e = make_error("the passes form a cycle: no order satisfies what they read and write",
                          cycle.empty() ? SourceLoc{} : passes[cycle.front()].loc);
+    auto label = [&](size_t i) { return std::string(passes[i].group ? "group '" : "pass '") + passes[i].name + "'"; };
     if (!cycle.empty()) {
-        e.pass = passes[cycle.front()].name;
+        if (!passes[cycle.front()].group) e.pass = passes[cycle.front()].name;
         for (size_t k = 0; k < cycle.size(); ++k) {
             size_t a = cycle[k], b = cycle[(k + 1) % cycle.size()];
-            e.notes.push_back("pass '" + passes[b].name + "' (" + passes[b].loc.str() +
-                              ") needs '" + why[{a, b}] + "' from pass '" + passes[a].name + "'");
+            e.notes.push_back(label(b) + " (" + passes[b].loc.str() + ") needs '" + why[{a, b}] + "' from " + label(a));
         }
+        if (std::any_of(cycle.begin(), cycle.end(), [&](size_t i) { return passes[i].group; }))
+            e.notes.push_back("a group runs as one unit: a pass cannot sit between two of its members");
     }
     e.hint = "use a history image (history = true, read as <name>_prev) to read last frame's result";
     return e;

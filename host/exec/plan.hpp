@@ -9,6 +9,7 @@
 #include <vulkan/vulkan.h>
 
 #include <optional>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,7 @@ struct Barrier {
     VkImageLayout old_layout = VK_IMAGE_LAYOUT_UNDEFINED, new_layout = VK_IMAGE_LAYOUT_UNDEFINED;
     VkPipelineStageFlags2 src_stages = VK_PIPELINE_STAGE_2_NONE, dst_stages = VK_PIPELINE_STAGE_2_NONE;
     VkAccessFlags2 src_access = VK_ACCESS_2_NONE, dst_access = VK_ACCESS_2_NONE;
+    bool operator==(const Barrier&) const = default;
 };
 
 // The barrier needed before `next` (nullopt when none is: a read after a read in the same
@@ -66,11 +68,48 @@ struct Barrier {
 // contents to be dropped (layout UNDEFINED as source: a full clear or first use).
 std::optional<Barrier> transition(ResourceState& state, const Usage& next, bool discard = false);
 
+// Mip levels [mip, mip + mips) x array layers [layer, layer + layers) of an image.
+struct SubRange {
+    uint32_t mip = 0, mips = 1, layer = 0, layers = 1;
+    bool overlaps(const SubRange& o) const {
+        return mip < o.mip + o.mips && o.mip < mip + mips && layer < o.layer + o.layers && o.layer < layer + layers;
+    }
+    bool operator==(const SubRange&) const = default;
+    bool operator<(const SubRange& o) const {
+        return std::tie(mip, mips, layer, layers) < std::tie(o.mip, o.mips, o.layer, o.layers);
+    }
+};
+
+// An image's state per subresource (mip level x layer): a pass that reads level i and writes
+// level i + 1 moves only those levels, so the other levels keep their layout and need no barrier.
+struct ImageState {
+    uint32_t mips = 1, layers = 1;
+    std::vector<ResourceState> sub;  // mip-major: sub[mip * layers + layer]
+    ImageState() : sub(1) {}
+    ImageState(uint32_t m, uint32_t l) : mips(m), layers(l), sub(size_t(m) * l) {}
+    ResourceState& at(uint32_t mip, uint32_t layer) { return sub[size_t(mip) * layers + layer]; }
+    const ResourceState& at(uint32_t mip, uint32_t layer) const { return sub[size_t(mip) * layers + layer]; }
+    SubRange all() const { return {0, mips, 0, layers}; }
+    // The layout of a range every subresource of which is in one layout (after a transition).
+    VkImageLayout layout(const SubRange& r) const { return at(r.mip, r.layer).layout; }
+};
+
+struct RangeBarrier {
+    Barrier barrier;
+    SubRange range;
+};
+
+// transition() for every subresource of `range`. Subresources that need the same barrier are
+// merged into rectangles (runs of layers, then runs of levels with the same runs), so an image
+// in one state yields one barrier over the range and only what differs is split.
+std::vector<RangeBarrier> transition(ImageState& state, const SubRange& range, const Usage& next, bool discard = false);
+
 // One pass as the planner sees it: resource names read and written, in declaration order.
 struct PlanPass {
     std::string name;
     SourceLoc loc;
     std::vector<std::string> reads, writes;
+    bool group = false;  // a [[group]] planned as one unit (messages say "group 'name'")
 };
 
 // Execution order. Passes run in file order unless a pass reads what a later-declared pass

@@ -51,20 +51,28 @@ Status Executor::record_buffer_image_copy(VkCommandBuffer cb, const graph::PassD
     return ok_status();
 }
 
-Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
+Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter, int group_iter) {
     CompiledGraph& g = *graph_;
     const CompiledPass& cp = g.passes[pass_index];
     const graph::PassDesc& pd = *cp.desc;
     PassPipeline& pp = *pipelines_[pass_index];
+    const CompiledGroup* group = cp.group >= 0 ? &g.groups[static_cast<size_t>(cp.group)] : nullptr;
+    // Levels and layers of this run, evaluated at build time (exec/views.cpp).
+    const RunViews& rv = cp.runs.at(static_cast<size_t>(group_iter) * static_cast<size_t>(cp.repeat) + static_cast<size_t>(iter));
 
-    // Names -> physical resources for this iteration (ping-pong swaps on odd iterations).
-    auto swapped = [&](const std::string& n) -> std::string {
-        if (iter % 2 == 0) return n;
-        for (size_t k = 0; k + 1 < pd.swap.size(); k += 2) {
-            if (pd.swap[k] == n) return pd.swap[k + 1];
-            if (pd.swap[k + 1] == n) return pd.swap[k];
+    // Names -> physical resources for this run: ping-pong pairs swap on odd iterations of the
+    // pass and, for a group's pairs, on odd iterations of the group (never both: validated).
+    auto swap_in = [](const std::vector<std::string>& pairs, int i, const std::string& n) -> std::string {
+        if (i % 2 == 0) return n;
+        for (size_t k = 0; k + 1 < pairs.size(); k += 2) {
+            if (pairs[k] == n) return pairs[k + 1];
+            if (pairs[k + 1] == n) return pairs[k];
         }
         return n;
+    };
+    auto swapped = [&](const std::string& n) -> std::string {
+        std::string m = swap_in(pd.swap, iter, n);
+        return group ? swap_in(group->desc->swap, group_iter, m) : m;
     };
     auto image = [&](const std::string& n) -> GraphImage& { return res_.images.at(swapped(n)); };
     auto phys_image = [&](const std::string& n, bool prev) {
@@ -76,20 +84,36 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
         return res_.buffers.at(n).phys[static_cast<size_t>(p)].get();
     };
 
-    // 1. Uses of this iteration, merged per physical resource.
+    // 1. Uses of this iteration, per physical image and subresource range; uses of overlapping
+    // ranges merge (over their bounding range), disjoint ones (read level i, write level i + 1)
+    // stay apart and keep their own layouts.
     struct ImageUse {
+        PhysImage* image;
+        SubRange range;
         Usage usage;
         bool discard = true;
     };
-    std::map<PhysImage*, ImageUse> img_uses;
+    std::vector<ImageUse> img_uses;
     std::map<PhysBuffer*, Usage> buf_uses;
-    auto use_image = [&](PhysImage* p, Access a, VkPipelineStageFlags2 stages, bool discard) {
-        Usage u = usage_of(a, stages);
-        auto [it, fresh] = img_uses.try_emplace(p, ImageUse{u, discard});
-        if (!fresh) {
-            it->second.usage = merge(it->second.usage, u);
-            it->second.discard = it->second.discard && discard;
+    auto use_range = [&](PhysImage* p, SubRange r, Access a, VkPipelineStageFlags2 stages, bool discard) {
+        ImageUse next{p, r, usage_of(a, stages), discard};
+        for (size_t k = 0; k < img_uses.size();) {
+            ImageUse& o = img_uses[k];
+            if (o.image != p || !o.range.overlaps(next.range)) {
+                ++k;
+                continue;
+            }
+            uint32_t m0 = std::min(o.range.mip, next.range.mip), l0 = std::min(o.range.layer, next.range.layer);
+            uint32_t m1 = std::max(o.range.mip + o.range.mips, next.range.mip + next.range.mips);
+            uint32_t l1 = std::max(o.range.layer + o.range.layers, next.range.layer + next.range.layers);
+            next = {p, {m0, m1 - m0, l0, l1 - l0}, merge(o.usage, next.usage), o.discard && discard && o.range == next.range};
+            img_uses.erase(img_uses.begin() + static_cast<long>(k));
+            k = 0;  // the grown range may now overlap an earlier use
         }
+        img_uses.push_back(next);
+    };
+    auto use_image = [&](PhysImage* p, Access a, VkPipelineStageFlags2 stages, bool discard) {
+        use_range(p, p->state.all(), a, stages, discard);
     };
     auto use_buffer = [&](PhysBuffer* p, Access a, VkPipelineStageFlags2 stages) {
         Usage u = usage_of(a, stages);
@@ -97,13 +121,16 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
         if (!fresh) it->second = merge(it->second, u);
     };
 
-    for (const auto& b : cp.bindings) {
+    for (size_t k = 0; k < cp.bindings.size(); ++k) {
+        const BoundResource& b = cp.bindings[k];
         VkPipelineStageFlags2 st = pipeline_stages(b.binding.stages);
         switch (b.kind) {
         case BoundResource::Kind::image:
-        case BoundResource::Kind::image_prev:
-            use_image(phys_image(b.resource, b.kind == BoundResource::Kind::image_prev), b.access, st, false);
+        case BoundResource::Kind::image_prev: {
+            PhysImage* p = phys_image(b.resource, b.kind == BoundResource::Kind::image_prev);
+            use_range(p, p->range(rv.bindings[k].mip, rv.bindings[k].layer), b.access, st, false);
             break;
+        }
         case BoundResource::Kind::buffer:
         case BoundResource::Kind::buffer_prev:
             use_buffer(phys_buffer(b.resource, b.kind == BoundResource::Kind::buffer_prev), b.access, st);
@@ -111,14 +138,20 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
         default: break;  // frame/params blocks are written by the host before submission
         }
     }
-    for (const auto& t : pd.targets) {
-        use_image(phys_image(t.image, false), Access::color_attachment, 0, pd.clear.color.has_value());
-        if (!t.resolve.empty()) use_image(phys_image(t.resolve, false), Access::resolve_dst, 0, true);
+    for (size_t k = 0; k < pd.targets.size(); ++k) {
+        const auto& t = pd.targets[k];
+        PhysImage* p = phys_image(t.image, false);
+        use_range(p, p->range(rv.targets[k].mip, rv.targets[k].layer), Access::color_attachment, 0, pd.clear.color.has_value());
+        if (!t.resolve.empty()) {
+            PhysImage* r = phys_image(t.resolve, false);
+            use_range(r, r->range(0, rv.targets[k].layer), Access::resolve_dst, 0, true);
+        }
     }
     if (pd.depth) {
         const GraphImage& gi = image(pd.depth->target.image);
         bool full_clear = pd.clear.depth && (!gi.format->has_stencil || pd.clear.stencil);
-        use_image(phys_image(pd.depth->target.image, false),
+        PhysImage* p = phys_image(pd.depth->target.image, false);
+        use_range(p, p->range(rv.depth.mip, rv.depth.layer),
                   pd.depth->write || pd.stencil.enable ? Access::depth_attachment : Access::depth_read, 0, full_clear);
     }
     bool src_is_buffer = !pd.src.empty() && res_.buffers.count(pd.src);
@@ -140,7 +173,7 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
     if (!pd.indirect.empty()) use_buffer(phys_buffer(pd.indirect, false), Access::indirect_read, 0);
 
     BarrierBatch batch;
-    for (auto& [p, u] : img_uses) require(batch, *p, u.usage, u.discard);
+    for (auto& u : img_uses) require(batch, *u.image, u.range, u.usage, u.discard);
     for (auto& [p, u] : buf_uses) require(batch, *p, u);
     batch.flush(cb);
 
@@ -237,7 +270,8 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
     image_infos.reserve(cp.bindings.size());
     buffer_infos.reserve(cp.bindings.size());
     std::vector<VkWriteDescriptorSet> writes;
-    for (const auto& b : cp.bindings) {
+    for (size_t k = 0; k < cp.bindings.size(); ++k) {
+        const BoundResource& b = cp.bindings[k];
         VkWriteDescriptorSet w{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
                                .dstSet = sets[b.binding.set],
                                .dstBinding = b.binding.binding,
@@ -263,8 +297,16 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
             GraphImage& gi = image(b.resource);
             PhysImage* p = phys_image(b.resource, b.kind == BoundResource::Kind::image_prev);
             bool storage = b.binding.type == shader::BindingType::storage_image;
-            image_infos.push_back({storage ? VK_NULL_HANDLE : gi.sampler.get(),
-                                   storage ? p->storage_view : p->image.view(), p->state.layout});
+            const Sel sel = rv.bindings[k];
+            const SubRange range = p->range(sel.mip, sel.layer);
+            VkImageView view = storage ? p->storage_view : p->image.view();
+            if (sel.mip >= 0 || sel.layer >= 0) {
+                // One level (and/or one layer, seen as a 2D image) of the image.
+                const auto& info = p->image.info();
+                VkImageViewType type = sel.layer >= 0 ? VK_IMAGE_VIEW_TYPE_2D : info.view_type;
+                view = p->image.sub_view(type, range.mip, storage ? 1 : range.mips, range.layer, range.layers);
+            }
+            image_infos.push_back({storage ? VK_NULL_HANDLE : gi.sampler.get(), view, p->state.layout(range)});
             w.pImageInfo = &image_infos.back();
             break;
         }
@@ -282,9 +324,17 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
     if (!sets.empty())
         vkCmdBindDescriptorSets(cb, pp.bind_point, pp.layout, 0, static_cast<uint32_t>(sets.size()), sets.data(), 0,
                                 nullptr);
-    int layer_of_iteration = iter;
+    // Inside a group a pass without its own repeat sees the group's iteration and count.
+    const bool own = !pd.repeat.empty() || !group;
+    const int seen_iter = own ? iter : group_iter;
+    const int seen_count = own ? cp.repeat : group->repeat;
     if (pp.push_stages) {
-        PushBlock push{iter, cp.repeat, layer_of_iteration, 0};
+        // pl_layer: the layer an expression selects for the first attachment, else the iteration
+        // (layer = "iteration" renders layer pl_iteration).
+        int layer = seen_iter;
+        if (!pd.targets.empty() && !pd.targets[0].layer_expr.empty()) layer = rv.targets[0].layer;
+        else if (pd.targets.empty() && pd.depth && !pd.depth->target.layer_expr.empty()) layer = rv.depth.layer;
+        PushBlock push{seen_iter, seen_count, layer, group_iter};
         vkCmdPushConstants(cb, pp.layout, pp.push_stages, 0,
                            std::min<uint32_t>(sizeof push, cp.program.reflection.push_constant_size), &push);
     }
@@ -322,16 +372,15 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
     std::vector<VkRenderingAttachmentInfo> colors;
     VkExtent2D area{0, 0};
     uint32_t layer_count = 1;
-    auto attachment_layer = [&](const graph::AttachmentRef& a) { return a.layer == -2 ? iter : a.layer; };
     for (size_t k = 0; k < pd.targets.size(); ++k) {
         const auto& t = pd.targets[k];
         PhysImage* p = phys_image(t.image, false);
-        int layer = attachment_layer(t);
+        const int layer = rv.targets[k].layer, mip = rv.targets[k].mip;
         if (layer >= 0 && static_cast<uint32_t>(layer) >= std::max(p->image.info().layers, p->image.info().extent.depth))
             return pass_error(pd, "target '" + t.image + "' has no layer " + std::to_string(layer));
         VkRenderingAttachmentInfo a{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                    .imageView = p->image.attachment_view(static_cast<uint32_t>(t.mip), layer),
-                                    .imageLayout = p->state.layout,
+                                    .imageView = p->image.attachment_view(static_cast<uint32_t>(mip), layer),
+                                    .imageLayout = p->state.layout(p->range(mip, layer)),
                                     .loadOp = pd.clear.color ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD,
                                     .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
         if (pd.clear.color) a.clearValue.color = vk::clear_color(*image(t.image).format, *pd.clear.color);
@@ -339,11 +388,11 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
             PhysImage* r = phys_image(t.resolve, false);
             a.resolveMode = image(t.image).format->is_integer ? VK_RESOLVE_MODE_SAMPLE_ZERO_BIT : VK_RESOLVE_MODE_AVERAGE_BIT;
             a.resolveImageView = r->image.attachment_view(0, layer);
-            a.resolveImageLayout = r->state.layout;
+            a.resolveImageLayout = r->state.layout(r->range(0, layer));
         }
         colors.push_back(a);
         if (k == 0) {
-            area = mip_extent(p->image.info(), static_cast<uint32_t>(t.mip));
+            area = mip_extent(p->image.info(), static_cast<uint32_t>(mip));
             if (layer == -1) layer_count = p->image.info().layers;
         }
     }
@@ -352,9 +401,9 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
     bool has_stencil = false;
     if (pd.depth) {
         PhysImage* p = phys_image(pd.depth->target.image, false);
-        int layer = attachment_layer(pd.depth->target);
-        depth.imageView = p->image.attachment_view(static_cast<uint32_t>(pd.depth->target.mip), layer);
-        depth.imageLayout = p->state.layout;
+        const int layer = rv.depth.layer, mip = rv.depth.mip;
+        depth.imageView = p->image.attachment_view(static_cast<uint32_t>(mip), layer);
+        depth.imageLayout = p->state.layout(p->range(mip, layer));
         depth.loadOp = pd.clear.depth ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
         depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
         depth.clearValue.depthStencil = {pd.clear.depth.value_or(1.0f), pd.clear.stencil.value_or(0)};
@@ -364,7 +413,7 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter) {
             stencil.loadOp = pd.clear.stencil ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
         }
         if (colors.empty()) {
-            area = mip_extent(p->image.info(), static_cast<uint32_t>(pd.depth->target.mip));
+            area = mip_extent(p->image.info(), static_cast<uint32_t>(mip));
             if (layer == -1) layer_count = p->image.info().layers;
         }
     }
@@ -460,7 +509,7 @@ Status Executor::record_blit_to(VkCommandBuffer cb, const std::string& name, VkI
     VkFilter filter = fp.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT ? VK_FILTER_LINEAR
                                                                                                  : VK_FILTER_NEAREST;
     BarrierBatch batch;
-    require(batch, *p, usage_of(Access::transfer_src, 0));
+    require(batch, *p, p->range(0, 0), usage_of(Access::transfer_src, 0));
     batch.flush(cb);
     VkImageBlit b{.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                   .srcOffsets = {{0, 0, 0}, {static_cast<int32_t>(info.extent.width), static_cast<int32_t>(info.extent.height), 1}},
@@ -513,7 +562,7 @@ Result<image::Image> Executor::read(const std::string& name, int mip, int layer)
     Status st = ctx_.run_once(
         [&](VkCommandBuffer cb) {
             BarrierBatch batch;
-            require(batch, *p, usage_of(Access::transfer_src, 0));
+            require(batch, *p, p->range(mip, layer), usage_of(Access::transfer_src, 0));
             batch.flush(cb);
             VkBufferImageCopy c{
                 .imageSubresource = {depth ? static_cast<VkImageAspectFlags>(VK_IMAGE_ASPECT_DEPTH_BIT)

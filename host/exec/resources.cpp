@@ -79,7 +79,7 @@ struct Needs {
     bool sampled = false, storage = false, attachment = false;
 };
 
-Needs needs_of(const CompiledGraph& g, const std::string& name) {
+Needs direct_needs_of(const CompiledGraph& g, const std::string& name) {
     Needs n;
     auto same = [&](const std::string& other) {
         if (other == name) return true;
@@ -97,6 +97,23 @@ Needs needs_of(const CompiledGraph& g, const std::string& name) {
             if (same(t.image) || same(t.resolve)) n.attachment = true;
         if (cp.desc->depth && same(cp.desc->depth->target.image)) n.attachment = true;
     }
+    return n;
+}
+
+// An image in a swap pair (a pass's or a group's) takes its partner's role every other
+// iteration, so it needs every usage the partner has.
+Needs needs_of(const CompiledGraph& g, const std::string& name) {
+    Needs n = direct_needs_of(g, name);
+    auto partner_of = [&](const std::vector<std::string>& pairs) {
+        for (size_t k = 0; k + 1 < pairs.size(); k += 2) {
+            const std::string* other = pairs[k] == name ? &pairs[k + 1] : pairs[k + 1] == name ? &pairs[k] : nullptr;
+            if (!other) continue;
+            Needs o = direct_needs_of(g, *other);
+            n.sampled |= o.sampled, n.storage |= o.storage, n.attachment |= o.attachment;
+        }
+    };
+    for (const auto& p : g.desc.passes) partner_of(p.swap);
+    for (const auto& gr : g.desc.groups) partner_of(gr.swap);
     return n;
 }
 
@@ -120,8 +137,10 @@ void record_upload(VkCommandBuffer cb, PhysImage& pi, VkBuffer staging) {
     }
     // The final barrier's second scope covers every later command, in this and in later
     // submissions: frames need no further barrier to read the upload.
-    pi.state.write_stages = pi.state.read_stages = VK_PIPELINE_STAGE_2_NONE;
-    pi.state.write_access = VK_ACCESS_2_NONE;
+    for (auto& st : pi.state.sub) {
+        st.write_stages = st.read_stages = VK_PIPELINE_STAGE_2_NONE;
+        st.write_access = VK_ACCESS_2_NONE;
+    }
 }
 
 Status upload_pixels(vk::Context& ctx, GraphImage& gi, const image::Image& img) {
@@ -320,6 +339,7 @@ Result<GraphResources> create_resources(vk::Context& ctx, const CompiledGraph& g
             for (int k = 0; k < (d.history ? 2 : 1); ++k) {
                 auto pi = std::make_shared<PhysImage>();
                 pi->image = vk::Image(ctx, info);
+                pi->state = ImageState(info.mips, info.layers);
                 if (need.storage) {
                     VkImageViewCreateInfo vci{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
                                               .image = pi->image.handle(),

@@ -17,9 +17,16 @@ namespace pl::exec {
 
 struct PhysImage {
     vk::Image image;
-    ResourceState state;
+    ImageState state;  // per mip level and layer
     VkImageView storage_view = VK_NULL_HANDLE;  // mip 0, all layers, for imageLoad/Store
     vk::UniqueImageView storage_view_owner;
+    // The subresources of one level and/or layer (Vulkan tracks 3D slices with their level).
+    SubRange range(int mip, int layer) const {
+        SubRange r = state.all();
+        if (mip >= 0) r.mip = static_cast<uint32_t>(mip), r.mips = 1;
+        if (layer >= 0 && image.info().type != VK_IMAGE_TYPE_3D) r.layer = static_cast<uint32_t>(layer), r.layers = 1;
+        return r;
+    }
 };
 
 struct GraphImage {

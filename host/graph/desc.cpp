@@ -23,6 +23,13 @@ const MeshDesc* GraphDesc::find_mesh(const std::string& n) const { return find_n
 const ParamDesc* GraphDesc::find_param(const std::string& n) const { return find_named(params, n); }
 const PassDesc* GraphDesc::find_pass(const std::string& n) const { return find_named(passes, n); }
 
+const GroupDesc* GraphDesc::group_of(const std::string& n) const {
+    for (const auto& gr : groups)
+        for (const auto& p : gr.passes)
+            if (p == n) return &gr;
+    return nullptr;
+}
+
 int ParamDesc::components() const {
     switch (type) {
     case ParamType::vec2: return 2;

@@ -142,9 +142,33 @@ struct AttachmentRef {
     // Layer to render into: >= 0 a fixed layer/face, -1 all layers (layered rendering with
     // gl_Layer), -2 "iteration": the layer equals the repeat index (render each cube face).
     int layer = 0;
+    // `mip = "iteration + 1"`, `layer = "iteration / 6"`: expressions evaluated per iteration
+    // (exec/views.cpp); when written they replace `mip` / `layer` above.
+    SizeExpr mip_expr, layer_expr;
     std::string resolve;  // MSAA: single-sample image to resolve into
     SourceLoc loc;
     SourceLoc resolve_loc;  // where `resolve` is written
+};
+
+// A shader binding of one mip level and/or one layer of an image:
+// bind = { src = { image = "hiz", mip = "iteration" } }. The shader sees only that level (an
+// image view with levelCount 1; its lod 0 is the image's level `mip`) and that layer (a 2D view).
+struct ViewRef {
+    std::string image;
+    SizeExpr mip, layer;  // empty = every level / every layer
+    SourceLoc loc;
+};
+
+// [[group]]: passes recorded in the listed order `repeat` times, sharing one iteration index;
+// `swap` pairs trade places after every group iteration. The planner orders the group as one
+// unit with the union of its members' reads and writes.
+struct GroupDesc {
+    std::string name;
+    SourceLoc loc;
+    SizeExpr repeat;  // empty = 1
+    std::vector<std::string> passes;
+    std::vector<std::string> swap;  // pairs, as a pass's swap
+    KeyLocs keys;  // "passes", "swap", "repeat"; "passes.N" for the Nth member
 };
 
 struct StencilFaceDesc {
@@ -197,6 +221,9 @@ struct PassDesc {
     // serves many graphs: bind = { blur_in = "hdr" } binds the shader's `blur_in` to image hdr.
     std::map<std::string, std::string> bind;
     SourceLoc bind_loc;
+    // Shader names bound to one level/layer (bind = { src = { image, mip, layer } }); their
+    // image is also in `bind`.
+    std::map<std::string, ViewRef> bind_views;
 
     // Raster state.
     std::vector<AttachmentRef> targets;  // colour targets in location order
@@ -281,6 +308,7 @@ struct TestDesc {
     std::map<std::string, Value> set;  // param overrides
     std::optional<OrbitCamera> camera; // overrides [view].camera.orbit
     std::string pass;                  // image to check; empty = output
+    int mip = 0, layer = 0;            // which level and layer of it (probes and checks may override)
     std::string golden;                // path relative to preset
     std::map<std::string, double> tolerance;
     std::vector<CheckDesc> checks;     // probes and properties
@@ -305,6 +333,7 @@ struct GraphDesc {
     std::vector<BufferDesc> buffers;
     std::vector<MeshDesc> meshes;
     std::vector<PassDesc> passes;
+    std::vector<GroupDesc> groups;
     std::string output;  // image shown / written by render
     SourceLoc output_loc;
     std::vector<TestDesc> tests;
@@ -314,6 +343,8 @@ struct GraphDesc {
     const MeshDesc* find_mesh(const std::string& n) const;
     const ParamDesc* find_param(const std::string& n) const;
     const PassDesc* find_pass(const std::string& n) const;
+    // The group listing pass `n` (nullptr when it runs on its own).
+    const GroupDesc* group_of(const std::string& n) const;
 };
 
 } // namespace pl::graph

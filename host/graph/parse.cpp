@@ -122,7 +122,7 @@ Result<GraphDesc> parse_graph_text(std::string_view text_in, const fs::path& as_
     }
     TableReader top(root, file, "preset.toml");
     // Unknown sections first: a misspelt [imgaes] is the cause of whatever else would fail.
-    if (auto s = top.finish({"preset", "view", "params", "images", "buffers", "meshes", "output", "pass", "test"}); !s)
+    if (auto s = top.finish({"preset", "view", "params", "images", "buffers", "meshes", "output", "pass", "group", "test"}); !s)
         return s.error();  // e.g. [[passes]]: "did you mean 'pass'?"
     auto section = [&](const char* key, auto&& fn) -> Status {
         const toml::node* n = top.get(key);
@@ -150,6 +150,7 @@ Result<GraphDesc> parse_graph_text(std::string_view text_in, const fs::path& as_
     if (st) st = section("meshes", [&](const toml::table& t) { return parse_meshes(t, file, g); });
     if (st) st = section("output", [&](const toml::table& t) { return parse_output(t, file, g); });
     if (st) st = array_of_tables("pass", [&](const toml::table& t) { return parse_pass(t, file, g); });
+    if (st) st = array_of_tables("group", [&](const toml::table& t) { return parse_group(t, file, g); });
     if (st) st = array_of_tables("test", [&](const toml::table& t) { return parse_test(t, file, g); });
     if (!st) return st.error();
     // toml++ iterates tables in key order; keep the order the user wrote (UI, std140 layout,

@@ -36,7 +36,9 @@ struct Key {
     std::vector<std::string> choices = {};
 };
 
-const std::vector<Key> kImageSelect = {{"pass", T::name}, {"channel", T::channel}, {"channels", T::channels}};
+// `mip` and `layer` pick one level and layer of the image (default: the case's).
+const std::vector<Key> kImageSelect = {{"pass", T::name}, {"channel", T::channel}, {"channels", T::channels},
+                                       {"mip", T::index}, {"layer", T::index}};
 const std::vector<Key> kBufferSelect = {{"buffer", T::name}, {"index", T::index}, {"range", T::pair},
                                         {"type", T::choice, {"uint", "int", "float"}}, {"stride", T::stride},
                                         {"field", T::index}};

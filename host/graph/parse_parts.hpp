@@ -15,6 +15,7 @@ Status parse_buffers(const toml::table& t, const std::string& file, GraphDesc& g
 Status parse_meshes(const toml::table& t, const std::string& file, GraphDesc& g);     // parse_resources.cpp
 Status parse_pass(const toml::table& t, const std::string& file, GraphDesc& g);       // parse_passes.cpp
 Status parse_test(const toml::table& t, const std::string& file, GraphDesc& g);       // parse_tests.cpp
+Status parse_group(const toml::table& t, const std::string& file, GraphDesc& g);      // parse_groups.cpp
 Status parse_orbit(TableReader& r, OrbitCamera& o);                                   // parse.cpp
 // One entry of a test's `checks = [...]` (or of `probes = [...]`, with forced_kind "probe"),
 // strictly: the kind's keys only, each type- and range-checked.                      // parse_checks.cpp

@@ -20,10 +20,20 @@ const std::vector<std::string> kFactors = {"zero", "one", "src_color", "one_minu
 const std::vector<std::string> kOps = {"add", "subtract", "reverse_subtract", "min", "max"};
 const std::vector<std::string> kBlendModes = {"off", "alpha", "premultiplied", "additive", "multiply", "min", "max"};
 
-// layer = integer >= 0 | "all" (-1) | "iteration" (-2).
-Status parse_layer(TableReader& r, int& layer) {
+// layer = integer >= 0 | "all" (-1) | "iteration" (-2) | an expression over `iteration`
+// (into `expr`, when given).
+Status parse_layer(TableReader& r, int& layer, SizeExpr* expr = nullptr) {
     const toml::node* l = r.get("layer");
     if (!l) return ok_status();
+    if (expr && l->is_string() && *l->value<std::string>() != "all" && *l->value<std::string>() != "iteration") {
+        // An expression uses an operator or a function ("iteration / 6", "min(iteration, 3)");
+        // a lone word such as "every" is a misspelt keyword, refused here with the choices.
+        const std::string v = *l->value<std::string>();
+        if (v.find_first_of("+-*/%()0123456789") == std::string::npos)
+            return r.error(r.what() + ": layer \"" + v + "\" is not \"all\", \"iteration\" or an expression such as \"iteration / 6\"",
+                           r.value_loc("layer"));
+        return r.size("layer", *expr);
+    }
     if (l->is_integer()) {
         int64_t v = *l->value<int64_t>();
         if (v < 0 || v > 2047) return r.error(r.what() + ": layer must be 0..2047, \"all\" or \"iteration\"", r.loc_of(*l));
@@ -36,6 +46,13 @@ Status parse_layer(TableReader& r, int& layer) {
         return r.type_error("layer", "an integer, \"all\" or \"iteration\"");
     }
     return ok_status();
+}
+
+// mip = integer 0..15 | an expression over `iteration` ("iteration + 1").
+Status parse_mip(TableReader& r, int& mip, SizeExpr& expr) {
+    const toml::node* m = r.get("mip");
+    if (m && m->is_string()) return r.size("mip", expr);
+    return r.integer("mip", mip, 0, 15);
 }
 
 Status parse_attachment(const toml::node& n, TableReader& owner, AttachmentRef& a) {
@@ -51,10 +68,25 @@ Status parse_attachment(const toml::node& n, TableReader& owner, AttachmentRef& 
     if (auto s = r.str("image", a.image); !s) return s;
     if (a.image.empty()) return r.error(r.what() + " needs image = \"name\"", a.loc);
     a.loc = r.value_loc("image");
-    if (auto s = r.integer("mip", a.mip, 0, 15); !s) return s;
-    if (auto s = parse_layer(r, a.layer); !s) return s;
+    if (auto s = parse_mip(r, a.mip, a.mip_expr); !s) return s;
+    if (auto s = parse_layer(r, a.layer, &a.layer_expr); !s) return s;
     if (auto s = r.str("resolve", a.resolve, &a.resolve_loc); !s) return s;
     return r.finish();
+}
+
+// bind = { name = { image = "hiz", mip = "iteration", layer = 2 } }: one level/layer of an image.
+Status parse_view(const toml::table& t, TableReader& owner, ViewRef& v) {
+    v.loc = owner.loc_of(t);
+    TableReader r(t, owner.file(), owner.what() + " bind view");
+    if (auto s = r.str("image", v.image); !s) return s;
+    if (v.image.empty()) return r.error(r.what() + " needs image = \"name\" (and mip and/or layer)", v.loc);
+    if (auto s = r.size("mip", v.mip); !s) return s;
+    if (auto s = r.size("layer", v.layer); !s) return s;
+    for (const SizeExpr* e : {&v.mip, &v.layer})
+        if (e->literal.size() > 1) return r.error(r.what() + ": mip and layer are one number (or an expression), not a vector", e->loc);
+    if (auto s = r.finish(); !s) return s;  // a misspelt key first: it is why nothing is selected
+    if (v.mip.empty() && v.layer.empty()) return r.error(r.what() + " selects nothing: give mip and/or layer, or bind the name as a string", v.loc);
+    return ok_status();
 }
 
 Status parse_blend_one(const toml::node& n, TableReader& owner, BlendDesc& b) {
@@ -146,8 +178,8 @@ Status parse_depth(const toml::node& n, TableReader& r, DepthDesc& d, KeyLocs& l
     if (auto s = dr.floats("bias_constant", d.bias_constant); !s) return s;
     if (auto s = dr.floats("bias_slope", d.bias_slope); !s) return s;
     if (auto s = dr.boolean("clamp", d.clamp); !s) return s;
-    if (auto s = dr.integer("mip", d.target.mip, 0, 15); !s) return s;
-    if (auto s = parse_layer(dr, d.target.layer); !s) return s;
+    if (auto s = parse_mip(dr, d.target.mip, d.target.mip_expr); !s) return s;
+    if (auto s = parse_layer(dr, d.target.layer, &d.target.layer_expr); !s) return s;
     return dr.finish();
 }
 
@@ -233,7 +265,16 @@ Status parse_pass_body(const toml::table& t, const std::string& file, GraphDesc&
         p.bind_loc = r.value_loc("bind");
         for (auto&& [k, v] : **bt) {
             std::string key(k.str());
-            if (!v.is_string()) return r.error(what + ": bind." + key + " must be a resource name (a string), not " + type_name(v), r.loc_of(v));
+            if (const toml::table* vt = v.as_table()) {
+                ViewRef view;
+                if (auto s = parse_view(*vt, r, view); !s) return s;
+                p.bind[key] = view.image;
+                p.bind_views[key] = view;
+                p.keys.map["bind." + key] = r.loc_of(v);
+                continue;
+            }
+            if (!v.is_string())
+                return r.error(what + ": bind." + key + " must be a resource name (a string) or { image, mip, layer }, not " + type_name(v), r.loc_of(v));
             p.bind[key] = *v.value<std::string>();
             p.keys.map["bind." + key] = r.loc_of(v);
         }

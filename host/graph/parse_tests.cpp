@@ -51,6 +51,8 @@ Status parse_test_body(const toml::table& t, const std::string& file, GraphDesc&
         d.camera = o;
     }
     if (auto s = r.str("pass", d.pass); !s) return s;
+    if (auto s = r.integer("mip", d.mip, 0, 15); !s) return s;  // which level/layer `pass` means
+    if (auto s = r.integer("layer", d.layer, 0, 2047); !s) return s;
     if (auto s = r.str("golden", d.golden); !s) return s;
     auto tol = r.table("tolerance", "a table { rmse = number, ... }");
     if (!tol) return tol.error();

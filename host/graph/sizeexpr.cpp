@@ -80,6 +80,10 @@ class Evaluator {
                 else if (op == '%') r[k] = floor_mod(x, y);
                 else r[k] = -floor_div(-x, y);  // ceil(x / y); x > INT64_MIN here
                 break;
+            case 'l':  // log2(x): one operand, the other is a dummy
+                if (x < 1) return set(fail("log2 needs a value of at least 1, not " + std::to_string(x), at));
+                r[k] = 63 - __builtin_clzll(static_cast<uint64_t>(x));  // floor(log2(x))
+                break;
             case 'm': r[k] = std::min(x, y); break;
             case 'M': r[k] = std::max(x, y); break;
             }
@@ -141,11 +145,19 @@ class Evaluator {
 
     std::optional<Vec> call(const std::string& fn, size_t at) {
         ws();
-        if (i_ >= s_.size() || s_[i_] != '(') return set(fail(fn + " takes two arguments: " + fn + "(a, b)", at));
+        const bool unary_fn = fn == "log2";
+        if (i_ >= s_.size() || s_[i_] != '(')
+            return set(fail(fn + (unary_fn ? " takes one argument: " + fn + "(x)" : " takes two arguments: " + fn + "(a, b)"), at));
         ++i_;
+        size_t a_at = i_;
         auto a = expr();
         if (!a) return a;
         ws();
+        if (unary_fn) {
+            if (i_ >= s_.size() || s_[i_] != ')') return set(fail("expected ')' to close " + fn + "( (it takes one argument)", i_));
+            ++i_;
+            return apply(*a, Vec{1}, 'l', at, a_at);
+        }
         if (i_ >= s_.size() || s_[i_] != ',') return set(fail("expected ',' (" + fn + " takes two arguments)", i_));
         ++i_;
         ws();
@@ -186,7 +198,8 @@ class Evaluator {
         if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
             std::string id;
             while (i_ < s_.size() && ident_char(s_[i_])) id += s_[i_++];
-            if (id == "min" || id == "max" || id == "ceil_div") return call(id, at);
+            if (id == "min" || id == "max" || id == "ceil_div" || id == "log2") return call(id, at);
+            if (auto l = env_.locals.find(id); l != env_.locals.end()) return Vec{l->second};
             if (id == "view") return Vec{env_.view_w, env_.view_h};
             if (id == "view.w" || id == "view.x") return Vec{env_.view_w};
             if (id == "view.h" || id == "view.y") return Vec{env_.view_h};
@@ -214,7 +227,8 @@ class Evaluator {
 std::vector<std::string> size_names(const SizeEnv& env) {
     std::vector<std::string> names = {"view", "view.w", "view.h"};
     for (const auto& [k, v] : env.params) names.push_back("params." + k);
-    names.insert(names.end(), {"min", "max", "ceil_div"});
+    for (const auto& [k, v] : env.locals) names.push_back(k);
+    names.insert(names.end(), {"min", "max", "ceil_div", "log2"});
     return names;
 }
 

@@ -1,7 +1,9 @@
 // Size expressions: "view", "view/2", "view.w*view.h*4", "ceil_div(view, 8)", [w,h], 256.
 // Values are integer vectors of 1-3 components; `view` is the 2-vector (w, h); scalars
 // broadcast; + - * / % and unary minus with the usual precedence; / and % floor (so that
-// a == (a / b) * b + a % b for negative values too); min, max and ceil_div take two arguments.
+// a == (a / b) * b + a % b for negative values too); min, max and ceil_div take two arguments,
+// log2 one (floor(log2(x)) for x >= 1, so "log2(max(view.w, view.h))" counts the halvings of a
+// full mip chain).
 // Errors point at the offending token: the SizeExpr's loc is the start of the TOML value (the
 // opening quote), so the column of a token is loc.col + 1 + its offset in the string.
 #pragma once
@@ -15,6 +17,9 @@ namespace pl::graph {
 struct SizeEnv {
     int64_t view_w = 640, view_h = 360;
     std::map<std::string, double> params;  // params.NAME (truncated toward zero)
+    // Names that only some expressions see: `iteration`, `iteration_count` and
+    // `group_iteration` in a pass's mip/layer selections (exec/views.cpp).
+    std::map<std::string, int64_t> locals;
 };
 
 struct Extent {

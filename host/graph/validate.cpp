@@ -310,6 +310,7 @@ Status validate_graph(const GraphDesc& g, const ValidateOptions& opt) {
     SizeEnv env = base_env(g, opt);
     if (auto s = validate_sizes(g, env, {}, {}); !s) return s;
     if (auto s = validate_passes(g, opt, names); !s) return s;
+    if (auto s = validate_groups(g, names); !s) return s;
 
     if (!g.output.empty()) {
         if (!g.find_image(g.output)) {

@@ -21,6 +21,7 @@ std::string human_bytes(double bytes);
 // kind; an `expect` expression evaluates at `env`.                                  validate_checks.cpp
 Status validate_check(const GraphDesc& g, const DeclaredNames& n, const TestDesc& t, const CheckDesc& c, const SizeEnv& env);
 Status validate_passes(const GraphDesc& g, const ValidateOptions& opt, const DeclaredNames& names);
+Status validate_groups(const GraphDesc& g, const DeclaredNames& names);  // validate_groups.cpp
 // Every size of the graph at one environment: images (sides, memory), buffers (bytes), pass
 // groups/threads/repeat. `context` (e.g. "in test 'x' (64x64)") is added as a note when not empty.
 Status validate_sizes(const GraphDesc& g, const SizeEnv& env, const std::string& context, const SourceLoc& context_loc);

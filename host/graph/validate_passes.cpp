@@ -308,6 +308,8 @@ struct PassChecker {
         for (const auto& [shader_name, res] : p.bind)
             if (!g.find_image(res) && !g.find_buffer(res))
                 return ref_error("bind target", res, p.keys.at("bind." + shader_name, p.bind_loc), p.name, names.resources(), "images and buffers");
+        for (const auto& [shader_name, v] : p.bind_views)
+            if (auto s = need_image(v.image, p.keys.at("bind." + shader_name, p.bind_loc), "a view's image (mip/layer)"); !s) return s;
         return ok_status();
     }
 };

@@ -175,6 +175,15 @@ Status validate_sizes(const GraphDesc& g, const SizeEnv& env, const std::string&
         if (auto s = counter_size(b, env, c); !s) return s;
     for (const auto& p : g.passes)
         if (auto s = pass_sizes(p, env, c); !s) return s;
+    for (const auto& gr : g.groups) {
+        if (gr.repeat.empty()) continue;
+        auto r = eval_scalar(gr.repeat, env);
+        if (!r) return c.with(r.error());
+        if (*r < 1 || *r > kMaxRepeat)
+            return c.with(make_error("group '" + gr.name + "': repeat evaluates to " + std::to_string(*r) + "; it must be between 1 and " +
+                                         std::to_string(kMaxRepeat),
+                                     gr.repeat.loc.known() ? gr.repeat.loc : gr.loc));
+    }
     return ok_status();
 }
 

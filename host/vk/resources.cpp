@@ -103,4 +103,19 @@ VkImageView Image::attachment_view(uint32_t mip, int layer) {
     return sub_views_.emplace(key, UniqueImageView(device_, v)).first->second;
 }
 
+VkImageView Image::sub_view(VkImageViewType type, uint32_t mip, uint32_t mips, uint32_t layer, uint32_t layers) {
+    auto key = std::make_tuple(static_cast<int>(type), mip, mips, layer, layers);
+    auto it = range_views_.find(key);
+    if (it != range_views_.end()) return it->second;
+    VkImageAspectFlags a = (aspect_ & VK_IMAGE_ASPECT_DEPTH_BIT) ? static_cast<VkImageAspectFlags>(VK_IMAGE_ASPECT_DEPTH_BIT) : aspect_;
+    VkImageViewCreateInfo vci{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+                              .image = image_,
+                              .viewType = type,
+                              .format = info_.format,
+                              .subresourceRange = {a, mip, mips, layer, layers}};
+    VkImageView v;
+    VK_CHECK(vkCreateImageView(device_, &vci, nullptr, &v));
+    return range_views_.emplace(key, UniqueImageView(device_, v)).first->second;
+}
+
 } // namespace pl::vk

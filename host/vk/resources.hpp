@@ -6,6 +6,7 @@
 #include "vk/unique.hpp"
 
 #include <map>
+#include <tuple>
 #include <utility>
 
 namespace pl::vk {
@@ -46,6 +47,10 @@ class Image {
     // A 2D (or 2D-array when layer < 0) view of one mip level, for attachments and per-mip
     // storage; created on first use.
     VkImageView attachment_view(uint32_t mip, int layer);
+    // A view of levels [mip, mip + mips) and layers [layer, layer + layers) of type `type`, for
+    // sampling or storage (the depth aspect only, for depth formats); created on first use. A
+    // sampled view of one level makes that level the shader's lod 0.
+    VkImageView sub_view(VkImageViewType type, uint32_t mip, uint32_t mips, uint32_t layer, uint32_t layers);
     VkImageSubresourceRange full_range() const {
         return {aspect_, 0, info_.mips, 0, info_.layers};
     }
@@ -58,6 +63,7 @@ class Image {
     UniqueMemory memory_;
     UniqueImageView view_;
     std::map<std::pair<uint32_t, int>, UniqueImageView> sub_views_;
+    std::map<std::tuple<int, uint32_t, uint32_t, uint32_t, uint32_t>, UniqueImageView> range_views_;
 };
 
 VkImageAspectFlags aspect_of(VkFormat f);

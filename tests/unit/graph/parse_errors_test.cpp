@@ -281,3 +281,44 @@ TEST(Parse, PassErrorsNameThePass) {
     EXPECT_EQ(e.pass, "blur");
     EXPECT_TRUE(has(e.format(), "[pass 'blur']"));
 }
+
+TEST(Parse, MipAndLayerSelectionsAndGroups) {
+    auto g = parse(R"(
+[[pass]]
+name = "reduce"
+fragment = "r.frag"
+targets = [{ image = "hiz", mip = "iteration + 1" }, { image = "arr", layer = "iteration / 2" }]
+bind = { src = { image = "hiz", mip = "iteration" }, one = { image = "arr", layer = 3 } }
+
+[[group]]
+name = "peel"
+repeat = "params.n"
+passes = ["reduce"]
+swap = ["a", "b"]
+)");
+    ASSERT_TRUE(g) << g.error().format();
+    const PassDesc& p = g->passes[0];
+    EXPECT_EQ(p.targets[0].mip_expr.text, "iteration + 1");
+    EXPECT_EQ(p.targets[1].layer_expr.text, "iteration / 2");
+    EXPECT_EQ(p.bind.at("src"), "hiz");  // a view also renames
+    EXPECT_EQ(p.bind_views.at("src").mip.text, "iteration");
+    EXPECT_EQ(p.bind_views.at("one").layer.literal, (std::vector<int64_t>{3}));
+    ASSERT_EQ(g->groups.size(), 1u);
+    EXPECT_EQ(g->groups[0].passes, (std::vector<std::string>{"reduce"}));
+    EXPECT_EQ(g->group_of("reduce"), &g->groups[0]);
+    EXPECT_EQ(g->groups[0].keys.at("passes.0", {}).line, 11);
+}
+
+TEST(Parse, ViewsAndGroupsAreStrict) {
+    auto none = fails("[[pass]]\nname = \"p\"\nfragment = \"f\"\nbind = { src = { image = \"hiz\" } }\n");
+    EXPECT_TRUE(has(none.message, "selects nothing"));
+    auto key = fails("[[pass]]\nname = \"p\"\nfragment = \"f\"\nbind = { src = { image = \"hiz\", lod = 1 } }\n");
+    EXPECT_TRUE(has(key.message, "unknown key 'lod'"));
+    auto empty = fails("[[group]]\nname = \"g\"\nrepeat = 2\n");
+    EXPECT_TRUE(has(empty.message, "needs passes"));
+    auto odd = fails("[[group]]\nname = \"g\"\npasses = [\"a\"]\nswap = [\"a\"]\n");
+    EXPECT_TRUE(has(odd.message, "even number"));
+    auto twice = fails("[[group]]\nname = \"g\"\npasses = [\"a\"]\n[[group]]\nname = \"g\"\npasses = [\"b\"]\n");
+    EXPECT_TRUE(has(twice.message, "already exists"));
+    EXPECT_EQ(twice.loc.line, 5);
+}

@@ -189,3 +189,35 @@ TEST(SizeExpr, NamesForMessages) {
     EXPECT_NE(std::find(names.begin(), names.end(), "params.spread"), names.end());
     EXPECT_NE(std::find(names.begin(), names.end(), "ceil_div"), names.end());
 }
+
+TEST(SizeExpr, Log2FloorsAndCountsHalvings) {
+    EXPECT_EQ(eval("log2(1)"), (V{0}));
+    EXPECT_EQ(eval("log2(2)"), (V{1}));
+    EXPECT_EQ(eval("log2(3)"), (V{1}));  // floor
+    EXPECT_EQ(eval("log2(1024)"), (V{10}));
+    EXPECT_EQ(eval("log2(1023)"), (V{9}));
+    EXPECT_EQ(eval("log2(max(view.w, view.h))"), (V{9}));  // 640: levels 0..9, 9 halvings
+    EXPECT_EQ(eval("log2(view)"), (V{9, 8}));              // per component
+    EXPECT_EQ(eval("log2(max(view.w, view.h)) + 1"), (V{10}));
+    auto zero = eval_size(text("log2(0)"), env());
+    ASSERT_FALSE(zero);
+    EXPECT_NE(zero.error().message.find("at least 1"), std::string::npos);
+    EXPECT_EQ(zero.error().loc.col, col_of(5));  // at the argument
+    auto two = eval_size(text("log2(4, 2)"), env());
+    ASSERT_FALSE(two);
+    EXPECT_NE(two.error().message.find("one argument"), std::string::npos);
+}
+
+TEST(SizeExpr, LocalsAreNamesOnlySomeExpressionsSee) {
+    SizeEnv e = env();
+    e.locals["iteration"] = 3;
+    auto v = eval_size(text("iteration + 1"), e);
+    ASSERT_TRUE(v);
+    EXPECT_EQ(*v, (V{4}));
+    auto none = eval_size(text("iteration + 1"), env());  // a size expression has no iteration
+    ASSERT_FALSE(none);
+    EXPECT_NE(none.error().message.find("unknown name 'iteration'"), std::string::npos);
+    auto near = eval_size(text("iteraton"), e);
+    ASSERT_FALSE(near);
+    EXPECT_NE(near.error().hint.find("iteration"), std::string::npos);
+}

@@ -1,0 +1,214 @@
+#include "exec/views.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pl::exec {
+
+uint32_t full_mip_count(uint32_t w, uint32_t h, uint32_t d) {
+    return 1 + static_cast<uint32_t>(std::floor(std::log2(std::max({w, h, d, 1u}))));
+}
+
+int image_levels(const graph::GraphDesc& g, const graph::ImageDesc& d_in, const graph::SizeEnv& env) {
+    const graph::ImageDesc* d = &d_in;
+    if (!d->alias.empty())
+        if (const graph::ImageDesc* t = g.find_image(d->alias)) d = t;
+    if (!d->file.empty()) return d->mips == 0 ? 0 : d->mips;  // the file decides the size
+    graph::SizeExpr size = d->size;
+    if (size.empty()) {
+        if (d->generator.empty()) size.text = "view";
+        else size.literal = {256, 256};
+    }
+    auto ext = graph::eval_extent(size, env, d->kind == graph::ImageKind::tex3d ? 3 : 2);
+    if (!ext) return d->mips == 0 ? 0 : d->mips;  // reported by size validation
+    uint32_t full = full_mip_count(static_cast<uint32_t>(std::max<int64_t>(1, ext->w)), static_cast<uint32_t>(std::max<int64_t>(1, ext->h)),
+                                   static_cast<uint32_t>(std::max<int64_t>(1, ext->d)));
+    return static_cast<int>(d->mips == 0 ? full : std::min(static_cast<uint32_t>(d->mips), full));
+}
+
+namespace {
+
+// One use of an image in a run, for the same-level check.
+struct Use {
+    std::string image;  // the image owning the memory
+    Sel sel;
+    bool write = false, view = false, layered = false;
+    std::string what;   // "target 'hiz'", "binding 'src'"
+    SourceLoc loc;
+};
+
+struct Resolver {
+    const graph::GraphDesc& g;
+    const graph::SizeEnv& base;
+    const CompiledPass& cp;
+    graph::SizeEnv env;
+
+    Error err(const std::string& msg, const SourceLoc& l, const std::string& res) const {
+        Error e = make_error(msg, l.known() ? l : cp.desc->loc);
+        e.pass = cp.desc->name;
+        e.resource = res;
+        return e;
+    }
+    std::string at_run() const {
+        std::string s = " at iteration " + std::to_string(env.locals.at("iteration"));
+        if (cp.group >= 0 && cp.repeat > 1) s += " of group iteration " + std::to_string(env.locals.at("group_iteration"));
+        return s;
+    }
+    const graph::ImageDesc* base_image(const std::string& n) const {
+        const graph::ImageDesc* d = g.find_image(n);
+        if (d && !d->alias.empty()) d = g.find_image(d->alias);
+        return d;
+    }
+    int layers_of(const graph::ImageDesc& d) const {
+        return d.kind == graph::ImageKind::cube ? 6 : d.kind == graph::ImageKind::tex2d_array ? std::max(1, d.layers) : 1;
+    }
+
+    // A mip or layer expression's value, checked against the image's count (0 = unknown).
+    Result<int> eval(const graph::SizeExpr& e, const std::string& image, const char* what, int count) const {
+        auto v = graph::eval_scalar(e, env);
+        if (!v) {
+            Error x = v.error();
+            x.pass = cp.desc->name;
+            x.resource = image;
+            return x;
+        }
+        if (*v < 0 || (count > 0 && *v >= count)) {
+            std::string text = e.text.empty() ? std::to_string(*v) : "\"" + e.text + "\"";
+            Error x = err(std::string(what) + " = " + text + " is " + std::to_string(*v) + at_run() + "; image '" + image + "' has " +
+                              std::to_string(count) + " " + what + (count == 1 ? "" : "s") +
+                              (count > 0 ? " (0.." + std::to_string(count - 1) + ")" : ""),
+                          e.loc, image);
+            x.hint = std::string("the ") + what + " must exist at every iteration: check repeat and the expression";
+            return x;
+        }
+        return static_cast<int>(*v);
+    }
+
+    Result<Sel> attachment(const graph::AttachmentRef& a) const {
+        Sel s{a.mip, a.layer == -2 ? static_cast<int>(env.locals.at("iteration")) : a.layer};
+        const graph::ImageDesc* d = base_image(a.image);
+        if (!d) return s;
+        if (!a.mip_expr.empty()) {
+            auto m = eval(a.mip_expr, a.image, "mip", image_levels(g, *d, env));
+            if (!m) return m.error();
+            s.mip = *m;
+        }
+        if (!a.layer_expr.empty()) {
+            auto l = eval(a.layer_expr, a.image, "layer", d->kind == graph::ImageKind::tex3d ? 0 : layers_of(*d));
+            if (!l) return l.error();
+            s.layer = *l;
+        }
+        return s;
+    }
+
+    Result<Sel> view(const BoundResource& b) const {
+        Sel s;
+        if (!b.view) return s;
+        const graph::ImageDesc* d = base_image(b.resource);
+        if (!d) return s;
+        if (!b.view->mip.empty()) {
+            auto m = eval(b.view->mip, b.resource, "mip", image_levels(g, *d, env));
+            if (!m) return m.error();
+            s.mip = *m;
+        }
+        if (!b.view->layer.empty()) {
+            if (d->kind == graph::ImageKind::tex3d)
+                return err("image '" + b.resource + "' is 3D: a view selects a mip, not a layer", b.view->layer.loc, b.resource);
+            auto l = eval(b.view->layer, b.resource, "layer", layers_of(*d));
+            if (!l) return l.error();
+            s.layer = *l;
+        }
+        return s;
+    }
+
+    // Two uses of one image in one run, one of them writing, on overlapping levels and layers:
+    // undefined (a feedback loop), unless neither selects a level (the whole-image cases that
+    // bind_pass already judges).
+    Status same_level(const std::vector<Use>& uses) const {
+        auto overlap = [](const Sel& a, const Sel& b) {
+            bool mips = a.mip < 0 || b.mip < 0 || a.mip == b.mip;
+            bool layers = a.layer < 0 || b.layer < 0 || a.layer == b.layer;
+            return mips && layers;
+        };
+        for (size_t i = 0; i < uses.size(); ++i)
+            for (size_t j = i + 1; j < uses.size(); ++j) {
+                const Use &a = uses[i], &b = uses[j];
+                if (a.image != b.image || !(a.write || b.write) || !(a.view || b.view) || !overlap(a.sel, b.sel)) continue;
+                const Use& v = a.view ? a : b;
+                const Use& o = a.view ? b : a;
+                auto level = [](const Use& u) {
+                    return (u.sel.mip < 0 ? std::string("every level") : "level " + std::to_string(u.sel.mip)) +
+                           (u.sel.layer < 0 || !u.layered ? "" : " layer " + std::to_string(u.sel.layer));
+                };
+                Error e = err("image '" + v.image + "': " + v.what + " (" + level(v) + ") and " + o.what + " (" + level(o) +
+                                  ") touch the same level" + at_run() + ", and one of them writes it",
+                              v.loc, v.image);
+                e.notes.push_back(o.what + " is at " + o.loc.str());
+                e.hint = "read one level and write another (e.g. sample mip = \"iteration\", render mip = \"iteration + 1\")";
+                return e;
+            }
+        return ok_status();
+    }
+
+    Result<RunViews> run(int group_iteration, int iteration) {
+        env.locals["group_iteration"] = group_iteration;
+        env.locals["iteration"] = iteration;
+        const graph::PassDesc& pd = *cp.desc;
+        RunViews rv;
+        std::vector<Use> uses;
+        auto owner = [&](const std::string& n) {
+            const graph::ImageDesc* d = base_image(n);
+            return d ? d->name : n;
+        };
+        auto layered = [&](const std::string& n) {
+            const graph::ImageDesc* d = base_image(n);
+            return d && layers_of(*d) > 1;
+        };
+        for (const auto& t : pd.targets) {
+            auto s = attachment(t);
+            if (!s) return s.error();
+            rv.targets.push_back(*s);
+            uses.push_back({owner(t.image), *s, true, false, layered(t.image), "target '" + t.image + "'", t.loc});
+        }
+        if (pd.depth) {
+            auto s = attachment(pd.depth->target);
+            if (!s) return s.error();
+            rv.depth = *s;
+            uses.push_back({owner(pd.depth->target.image), *s, pd.depth->write, false, layered(pd.depth->target.image),
+                            "depth '" + pd.depth->target.image + "'", pd.depth->target.loc});
+        }
+        for (const auto& b : cp.bindings) {
+            auto s = view(b);
+            if (!s) return s.error();
+            rv.bindings.push_back(*s);
+            if (b.kind != BoundResource::Kind::image) continue;
+            bool w = b.access == Access::storage_write || b.access == Access::storage_read_write;
+            SourceLoc l = pd.keys.at("bind." + b.binding.name, pd.loc);
+            uses.push_back({owner(b.resource), *s, w, b.view != nullptr, layered(b.resource), "binding '" + b.binding.name + "'", l});
+        }
+        if (auto st = same_level(uses); !st) return st.error();
+        return rv;
+    }
+};
+
+} // namespace
+
+Status resolve_views(const graph::GraphDesc& g, const graph::SizeEnv& env, CompiledPass& cp, int group_repeat) {
+    Resolver r{g, env, cp, env};
+    // Inside a group, a pass without a repeat of its own sees the group's iteration as
+    // `iteration`; one with its own repeat counts its own iterations (and sees group_iteration).
+    const bool own = !cp.desc->repeat.empty();
+    const int count = own ? cp.repeat : group_repeat;
+    r.env.locals["iteration_count"] = count;
+    cp.runs.clear();
+    cp.runs.reserve(static_cast<size_t>(group_repeat) * cp.repeat);
+    for (int gi = 0; gi < group_repeat; ++gi)
+        for (int i = 0; i < cp.repeat; ++i) {
+            auto rv = r.run(gi, own ? i : gi);
+            if (!rv) return rv.error();
+            cp.runs.push_back(std::move(rv.value()));
+        }
+    return ok_status();
+}
+
+} // namespace pl::exec

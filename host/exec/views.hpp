@@ -1,0 +1,21 @@
+// Per-run level and layer selections of a pass: `mip = "iteration + 1"` on a target, bind views
+// { image, mip, layer }. Evaluated at build time for every run (a repeated pass's iterations, a
+// group's iterations), so that a level out of range or a level read and written by one run is an
+// error at its TOML value before anything is recorded.
+#pragma once
+
+#include "exec/build.hpp"
+#include "graph/sizeexpr.hpp"
+
+namespace pl::exec {
+
+// The levels an image will have (its `mips`, or the full chain of its evaluated size); 0 when
+// unknown before loading (file images with mips = "full").
+int image_levels(const graph::GraphDesc& g, const graph::ImageDesc& d, const graph::SizeEnv& env);
+// 1 + floor(log2(largest side)): the length of a full mip chain.
+uint32_t full_mip_count(uint32_t w, uint32_t h, uint32_t d);
+
+// Fills cp.runs for every run of the pass; `group_repeat` is its group's count (1 outside one).
+Status resolve_views(const graph::GraphDesc& g, const graph::SizeEnv& env, CompiledPass& cp, int group_repeat);
+
+} // namespace pl::exec
