@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
 
-#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -271,15 +271,19 @@ TEST(Simplify, TeapotFigures) {
     // The figures of the note: time (printed only), triangle counts, geometric error.
     Mesh teapot = gen("teapot");
     const double size = extent(teapot);
-    // Bounds: twice the measured one-sided vertex Hausdorff distances (0.0049, 0.0091, 0.0246 on
-    // a 2.5-unit diagonal); a sign error in the quadric or a wrong optimum misses them by far.
-    const std::map<double, double> bound = {{0.5, 0.01}, {0.25, 0.02}, {0.1, 0.05}};
+    // Bounds: 1.25x the measured one-sided vertex Hausdorff distances (0.0049, 0.0091, 0.0246 on
+    // a 2.5-unit diagonal). The computation is deterministic double arithmetic, so the margin
+    // only has to absorb compilers. Placing vertices at endpoints/midpoints instead of the
+    // quadric's optimum gives 0.0077, 0.0159, 0.0474 and fails; a sign error in the quadric
+    // gives 0.09-0.14.
+    const std::map<double, double> bound = {{0.5, 0.0062}, {0.25, 0.0115}, {0.1, 0.031}};
     for (double ratio : {0.5, 0.25, 0.1}) {
-        auto t0 = std::chrono::steady_clock::now();
+        // CPU time, not wall time: the figure should not depend on what else the machine runs.
+        std::clock_t c0 = std::clock();
         Simplified s = to(teapot, ratio);
-        double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        double ms = 1000.0 * double(std::clock() - c0) / CLOCKS_PER_SEC;
         double out = vertex_distance(teapot, s.mesh), back = vertex_distance(s.mesh, teapot);
-        std::printf("teapot ratio %.2f: %zu -> %zu triangles, %zu collapses (%zu re-costed, %zu refused), %.2f ms; "
+        std::printf("teapot ratio %.2f: %zu -> %zu triangles, %zu collapses (%zu re-costed, %zu refused), %.2f ms CPU; "
                     "max collapse error %.5f, vertex Hausdorff in->out %.5f out->in %.5f (extent %.3f)\n",
                     ratio, s.stats.input_triangles, s.stats.output_triangles, s.stats.collapses, s.stats.recosted,
                     s.stats.rejected, ms, s.stats.max_error, out, back, size);
