@@ -223,6 +223,27 @@ TEST(Simplify, TeapotKeepsItsTopologyAndFacing) {
     }
 }
 
+TEST(Simplify, MaxErrorBoundsEveryCollapse) {
+    // max_error alone simplifies as far as the bound allows, and no collapse made exceeds it; a
+    // looser bound goes further.
+    Mesh teapot = gen("teapot");
+    size_t last = SIZE_MAX;
+    for (double e : {0.001, 0.004, 0.016}) {
+        SimplifyOptions o;
+        o.target.max_error = e;
+        Simplified s = simplify(teapot, o);
+        EXPECT_LE(s.stats.max_error, e);
+        EXPECT_GT(s.stats.collapses, 0u) << e;
+        EXPECT_LT(s.stats.output_triangles, last) << e;
+        last = s.stats.output_triangles;
+    }
+    // With a triangle target as well, whichever binds first stops the run.
+    SimplifyOptions o;
+    o.target.triangles = 3000;
+    o.target.max_error = 0.016;
+    EXPECT_LE(simplify(teapot, o).stats.output_triangles, 3000u);
+}
+
 TEST(Simplify, IsDeterministic) {
     Mesh teapot = gen("teapot");
     SimplifyOptions o;
