@@ -1,4 +1,4 @@
-// Garland-Heckbert quadric error metric (000_c9f7e5de708ecbb3.txt L6005-6033): the squared
+// Garland-Heckbert quadric error metric (000_c9f7e5de708ecbb3.txt L6004-6033): the squared
 // distance of a point v = [x y z 1] to a set of planes p = [A B C D] is
 //   Delta(v) = sum_p (p^T v)^2 = v^T (sum_p p p^T) v = v^T Q v,
 // and the quadric of a collapsed pair is Q1 + Q2. Q is symmetric, so 10 coefficients; each
