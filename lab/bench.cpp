@@ -89,6 +89,12 @@ int bench(const BenchOptions& o, const CommonOptions& c) {
     double rec_med = percentile(record_ms, 0.5), rec_p95 = percentile(record_ms, 0.95);
     std::printf("record  median %.3f ms, p95 %.3f ms (CPU: blocks, descriptors, commands; the host's own cost)\n", rec_med, rec_p95);
     std::printf("memory  peak RSS %.1f MB\n", rss);
+    for (const auto& [name, m] : (*ex)->resources().meshes)  // host cost paid once, at creation
+        if (m.simplified)
+            std::printf("mesh    %s: simplified %zu -> %zu triangles%s in %.2f ms (%zu collapses, max error %.3g)\n",
+                        name.c_str(), m.simplified->input_triangles, m.simplified->output_triangles,
+                        m.has_morph ? (", morph target " + std::to_string(m.simplified->morph_triangles)).c_str() : "",
+                        m.simplify_ms, m.simplified->collapses, m.simplified->max_error);
     std::printf("%-24s %12s %12s\n", "pass", "median GPU", "p95 GPU");
     for (const auto& n : pass_order)
         std::printf("%-24s %9.3f ms %9.3f ms\n", n.c_str(), percentile(pass_ms[n], 0.5), percentile(pass_ms[n], 0.95));

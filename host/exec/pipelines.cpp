@@ -1,6 +1,7 @@
 #include "exec/pipelines.hpp"
 
 #include "scene/mesh.hpp"
+#include "scene/simplify.hpp"
 #include "vk/check.hpp"
 #include "vk/names.hpp"
 
@@ -293,27 +294,43 @@ Result<std::shared_ptr<PassPipeline>> create_pass_pipeline(vk::Context& ctx, con
                                   " colour outputs but the pass has " + std::to_string(color_formats.size()) +
                                   " target(s)");
 
-    // Vertex input: the mesh's interleaved layout, only the locations the shader reads.
+    // Vertex input: the mesh's interleaved layout, only the locations the shader reads; binding 1
+    // holds a simplified mesh's geomorph targets (scene::MorphVertex), locations 4..6.
     std::vector<VkVertexInputAttributeDescription> attrs;
-    VkVertexInputBindingDescription vbind{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
+    std::vector<VkVertexInputBindingDescription> vbinds;
     if (!pd.mesh.empty()) {
+        bool morph = false;
         for (uint32_t loc : refl.vertex_input_locations) {
             switch (loc) {
             case 0: attrs.push_back({0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)}); break;
             case 1: attrs.push_back({1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)}); break;
             case 2: attrs.push_back({2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv)}); break;
             case 3: attrs.push_back({3, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(scene::Vertex, tangent)}); break;
+            case 4: attrs.push_back({4, 1, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::MorphVertex, position)}), morph = true; break;
+            case 5: attrs.push_back({5, 1, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::MorphVertex, normal)}), morph = true; break;
+            case 6: attrs.push_back({6, 1, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::MorphVertex, uv)}), morph = true; break;
             default:
                 return pass_error(pd, "vertex shader input location " + std::to_string(loc) +
-                                          " does not exist; meshes provide 0 position, 1 normal, 2 uv, 3 tangent");
+                                          " does not exist; meshes provide 0 position, 1 normal, 2 uv, 3 tangent, and "
+                                          "with simplify.morph 4 morph_position, 5 morph_normal, 6 morph_uv");
             }
         }
+        if (morph && !res.meshes.at(pd.mesh).has_morph) {
+            Error e = pass_error(pd, "the vertex shader reads geomorph inputs (locations 4..6) but mesh '" + pd.mesh +
+                                         "' has none");
+            e.loc = pd.keys.at("mesh", e.loc);  // the mesh named here is the one lacking them
+            e.resource = pd.mesh;
+            e.hint = "give the mesh simplify = { ratio = ..., morph = { ratio = <coarser> } }";
+            return e;
+        }
+        if (!attrs.empty()) vbinds.push_back({0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX});
+        if (morph) vbinds.push_back({1, sizeof(scene::MorphVertex), VK_VERTEX_INPUT_RATE_VERTEX});
     } else if (!refl.vertex_input_locations.empty()) {
         return pass_error(pd, "the vertex shader reads vertex inputs but the pass has no mesh");
     }
     VkPipelineVertexInputStateCreateInfo vi{.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO,
-                                            .vertexBindingDescriptionCount = attrs.empty() ? 0u : 1u,
-                                            .pVertexBindingDescriptions = &vbind,
+                                            .vertexBindingDescriptionCount = static_cast<uint32_t>(vbinds.size()),
+                                            .pVertexBindingDescriptions = vbinds.data(),
                                             .vertexAttributeDescriptionCount = static_cast<uint32_t>(attrs.size()),
                                             .pVertexAttributeDescriptions = attrs.data()};
     bool fullscreen = pd.kind == graph::PassKind::fullscreen;
@@ -394,6 +411,7 @@ Result<std::shared_ptr<PassPipeline>> create_pass_pipeline(vk::Context& ctx, con
     put_all(key, color_formats);
     put(key, std::array<VkFormat, 2>{depth_format, stencil_format});
     put_all(key, attrs);
+    put_all(key, vbinds);
     put(key, std::array<uint32_t, 4>{uint32_t(ia.topology), ts.patchControlPoints, uint32_t(tess), uint32_t(samples)});
     put(key, std::array<uint32_t, 5>{rs.depthClampEnable, uint32_t(rs.polygonMode), rs.cullMode, uint32_t(rs.frontFace), rs.depthBiasEnable});
     put(key, std::array<float, 3>{rs.depthBiasConstantFactor, rs.depthBiasSlopeFactor, rs.lineWidth});

@@ -440,8 +440,9 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter, in
         const uint32_t index_count = mesh ? (adjacency ? mesh->adjacency_count : mesh->index_count) : 0;
         if (mesh) {
             VkDeviceSize zero = 0;
-            VkBuffer vb = mesh->vertices.buffer;
-            vkCmdBindVertexBuffers(cb, 0, 1, &vb, &zero);
+            VkBuffer vb[2] = {mesh->vertices.buffer, mesh->morph.buffer};  // binding 1: geomorph targets
+            VkDeviceSize offsets[2] = {zero, zero};
+            vkCmdBindVertexBuffers(cb, 0, mesh->has_morph ? 2u : 1u, vb, offsets);
             vkCmdBindIndexBuffer(cb, adjacency ? mesh->adjacency.buffer : mesh->indices.buffer, 0, VK_INDEX_TYPE_UINT32);
         }
         if (!pd.indirect.empty()) {

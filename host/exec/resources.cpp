@@ -2,6 +2,7 @@
 
 #include "exec/barriers.hpp"
 #include "exec/bind.hpp"
+#include "exec/mesh_source.hpp"
 #include "exec/texels.hpp"
 #include "graph/validate.hpp"
 #include "image/image.hpp"
@@ -161,23 +162,11 @@ Status upload_pixels(vk::Context& ctx, GraphImage& gi, const image::Image& img) 
     return ctx.run_once([&](VkCommandBuffer cb) { record_upload(cb, pi, staging.buffer); });
 }
 
-Result<scene::Mesh> load_cpu_mesh(const CompiledGraph& g, const graph::MeshDesc& md) {
-    Result<scene::Mesh> mesh = md.file.empty() ? scene::generate_mesh(md.generator, md.args)
-                                               : scene::load_mesh(g.desc.dir / md.file);
-    if (!mesh) {
-        Error e = mesh.error();
-        if (!e.loc.known()) e.loc = md.loc;
-        e.resource = md.name;
-        return e;
-    }
-    return mesh;
-}
-
 // generator = "bvh" | "triangles": the words of scene/scene_buffer.hpp over the named meshes.
 static_assert(graph::BufferDesc::kMaxLeafSize == scene::kMaxLeafSize, "the parser's leaf_size range is the build's");
-Result<std::vector<uint32_t>> generated_words(const graph::BufferDesc& d, const std::map<std::string, scene::Mesh>& meshes) {
+Result<std::vector<uint32_t>> generated_words(const graph::BufferDesc& d, const std::map<std::string, CpuMesh>& meshes) {
     std::vector<scene::SceneInput> in;
-    for (const auto& name : d.meshes) in.push_back({name, &meshes.at(name)});
+    for (const auto& name : d.meshes) in.push_back({name, &meshes.at(name).mesh});  // simplified, if asked
     auto words = scene::build_scene_buffer(in, d.generator == "bvh", d.leaf_size);
     if (!words) return resource_error(words.error().message, d.keys.at("generator", d.loc), d.name);
     if (auto s = graph::check_built_buffer_size(d, int64_t(words->size()) * 4); !s) return s.error();
@@ -201,8 +190,17 @@ std::vector<uint32_t> data_words(const graph::BufferDesc& d, VkDeviceSize bytes)
     return words;
 }
 
-Result<GpuMesh> create_mesh(vk::Context& ctx, const CompiledGraph& g, const graph::MeshDesc& md, const scene::Mesh* mesh) {
+Result<GpuMesh> create_mesh(vk::Context& ctx, const CompiledGraph& g, const graph::MeshDesc& md, const CpuMesh* cpu) {
+    const scene::Mesh* mesh = &cpu->mesh;
     GpuMesh gm;
+    gm.simplified = cpu->simplified;
+    gm.simplify_ms = cpu->simplify_ms;
+    if (!cpu->morph.empty()) {  // vertex binding 1: geomorph targets (locations 4..6)
+        size_t mb = cpu->morph.size() * sizeof(scene::MorphVertex);
+        gm.morph = vk::create_buffer(ctx, mb, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
+        std::memcpy(gm.morph.mapped, cpu->morph.data(), mb);
+        gm.has_morph = true;
+    }
     size_t vb = mesh->vertices.size() * sizeof(scene::Vertex), ib = mesh->indices.size() * sizeof(uint32_t);
     gm.vertices = vk::create_buffer(ctx, std::max<size_t>(vb, 16), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
     gm.indices = vk::create_buffer(ctx, std::max<size_t>(ib, 16), VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
@@ -365,9 +363,9 @@ Result<GraphResources> create_resources(vk::Context& ctx, const CompiledGraph& g
     }
 
     // CPU meshes once: draws upload them, host-built buffers are built from them.
-    std::map<std::string, scene::Mesh> cpu_meshes;
+    std::map<std::string, CpuMesh> cpu_meshes;
     for (const auto& md : g.desc.meshes) {
-        auto m = load_cpu_mesh(g, md);
+        auto m = load_graph_mesh(g.desc, md);
         if (!m) return m.error();
         cpu_meshes.emplace(md.name, std::move(m.value()));
     }

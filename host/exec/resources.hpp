@@ -5,12 +5,14 @@
 
 #include "exec/build.hpp"
 #include "exec/plan.hpp"
+#include "scene/simplify.hpp"
 #include "vk/formats.hpp"
 #include "vk/resources.hpp"
 
 #include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace pl::exec {
@@ -58,6 +60,11 @@ struct GpuMesh {
     vk::Buffer adjacency;
     uint32_t adjacency_count = 0;
     uint32_t instances = 1;
+    // simplify = { morph = ... }: vertex binding 1, one scene::MorphVertex per vertex.
+    vk::Buffer morph;
+    bool has_morph = false;
+    std::optional<scene::SimplifyStats> simplified;
+    double simplify_ms = 0;
 };
 
 struct GraphResources {

@@ -102,6 +102,19 @@ struct BufferDesc {
     KeyLocs keys;
 };
 
+// `simplify = { ... }` on a mesh: QEM edge collapses (scene/simplify.hpp) down to a target, and
+// optionally on to a coarser morph target whose positions become vertex inputs 4..6.
+struct SimplifyLevelDesc {
+    std::optional<double> ratio;     // (0, 1] of the input's triangles
+    std::optional<int> triangles;    // >= 1
+    std::optional<double> max_error; // >= 0, mesh units
+};
+struct MeshSimplifyDesc {
+    SimplifyLevelDesc target;
+    std::optional<SimplifyLevelDesc> morph;
+    SourceLoc loc;
+};
+
 struct MeshDesc {
     std::string name;
     SourceLoc loc;
@@ -109,6 +122,7 @@ struct MeshDesc {
     std::string file;       // .obj or .gltf/.glb relative to the preset
     std::map<std::string, double> args;  // generator arguments: segments, radius, tube ...
     int instances = 1;
+    std::optional<MeshSimplifyDesc> simplify;  // keys "simplify.ratio", "simplify.morph.ratio" ...
     KeyLocs keys;
 };
 

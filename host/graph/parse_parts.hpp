@@ -13,6 +13,7 @@ Status parse_params(const toml::table& t, const std::string& file, GraphDesc& g)
 Status parse_images(const toml::table& t, const std::string& file, GraphDesc& g);     // parse_resources.cpp
 Status parse_buffers(const toml::table& t, const std::string& file, GraphDesc& g);    // parse_resources.cpp
 Status parse_meshes(const toml::table& t, const std::string& file, GraphDesc& g);     // parse_resources.cpp
+Status parse_mesh_simplify(TableReader& mesh, MeshSimplifyDesc& out);              // parse_simplify.cpp
 Status parse_pass(const toml::table& t, const std::string& file, GraphDesc& g);       // parse_passes.cpp
 Status parse_test(const toml::table& t, const std::string& file, GraphDesc& g);       // parse_tests.cpp
 Status parse_group(const toml::table& t, const std::string& file, GraphDesc& g);      // parse_groups.cpp

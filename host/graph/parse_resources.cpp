@@ -268,13 +268,17 @@ Status parse_mesh(const toml::table& mt, const std::string& file, MeshDesc& d) {
         if (ext != ".obj" && ext != ".gltf" && ext != ".glb")
             return r.error("mesh '" + d.name + "': file must be .obj, .gltf or .glb", r.value_loc("file"));
     }
+    if (r.has("simplify")) {
+        d.simplify.emplace();
+        if (auto s = parse_mesh_simplify(r, *d.simplify); !s) return s;
+    }
     // Every other key is a numeric generator argument.
     for (auto&& [ak, av] : mt) {
         std::string key(ak.str());
-        if (key == "generator" || key == "file" || key == "instances") continue;
+        if (key == "generator" || key == "file" || key == "instances" || key == "simplify") continue;
         if (!contains(kMeshArgs, key)) {
             Error e = r.error("mesh '" + d.name + "': unknown key '" + key + "'", r.key_loc(key));
-            std::vector<std::string> valid = {"generator", "file", "instances"};
+            std::vector<std::string> valid = {"generator", "file", "instances", "simplify"};
             valid.insert(valid.end(), kMeshArgs.begin(), kMeshArgs.end());
             suggest(e, key, valid, "keys");
             return e;

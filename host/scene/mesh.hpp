@@ -41,6 +41,10 @@ Result<Mesh> generate_mesh(const std::string& generator, const std::map<std::str
 // corners at one position, as in a UV sphere's pole rows) are skipped as neighbours.
 std::vector<uint32_t> adjacency_indices(const Mesh& mesh);
 
+// One id per distinct position (quantised to 1e-6 of the mesh's extent), dense from 0 in order
+// of first appearance: the topology under the seams. Used by adjacency and simplification.
+std::vector<uint32_t> weld_positions(const Mesh& mesh);
+
 // Loads .obj (tinyobjloader) or .gltf/.glb (tinygltf). Missing normals/tangents are computed.
 Result<Mesh> load_mesh(const std::filesystem::path& file);
 

@@ -373,3 +373,44 @@ TEST(Parse, Params) {
         EXPECT_EQ(e.loc.col, c.col) << c.text << e.format();
     }
 }
+
+TEST(Parse, MeshSimplify) {
+    auto g = parse("[meshes]\n"
+                   "a = { generator = \"teapot\", simplify = { ratio = 0.25 } }\n"
+                   "b = { file = \"m.obj\", simplify = { triangles = 100, max_error = 0.01, morph = { ratio = 0.1 } } }\n"
+                   "c = { generator = \"plane\", segments = 8, simplify = { max_error = 0.0 } }\n"
+                   "[images]\nldr = { format = \"rgba8\" }\n[[pass]]\nname = \"p\"\nfragment = \"debug/uv.frag\"\ntargets = [\"ldr\"]\n");
+    ASSERT_TRUE(g) << g.error().message;
+    const MeshDesc* a = g->find_mesh("a");
+    ASSERT_TRUE(a->simplify);
+    EXPECT_EQ(a->simplify->target.ratio, 0.25);
+    EXPECT_FALSE(a->simplify->target.triangles);
+    EXPECT_FALSE(a->simplify->morph);
+    EXPECT_EQ(a->keys.at("simplify.ratio", {}).line, 2);
+    EXPECT_EQ(a->keys.at("simplify.ratio", {}).col, 50);
+    const MeshDesc* b = g->find_mesh("b");  // a file mesh takes simplify too
+    ASSERT_TRUE(b->simplify && b->simplify->morph);
+    EXPECT_EQ(b->simplify->target.triangles, 100);
+    EXPECT_EQ(b->simplify->target.max_error, 0.01);
+    EXPECT_EQ(b->simplify->morph->ratio, 0.1);
+    EXPECT_EQ(b->keys.at("simplify.morph.ratio", {}).line, 3);
+    EXPECT_EQ(g->find_mesh("c")->simplify->target.max_error, 0.0);
+    EXPECT_EQ(g->find_mesh("c")->args.at("segments"), 8);  // generator arguments unaffected
+
+    const std::string tail = "\n[images]\nldr = { format = \"rgba8\" }\n[[pass]]\nname = \"p\"\nfragment = \"debug/uv.frag\"\ntargets = [\"ldr\"]\n";
+    auto err = [&](const std::string& simplify) {
+        return fails("[meshes]\nm = { generator = \"sphere\", simplify = " + simplify + " }" + tail);
+    };
+    EXPECT_TRUE(has(err("{ ratio = 0 }").message, "ratio must be in (0, 1], not 0"));
+    EXPECT_TRUE(has(err("{ ratio = 0.5, triangles = 10 }").message, "give ratio or triangles, not both"));
+    EXPECT_TRUE(has(err("{ }").message, "needs a target"));
+    EXPECT_TRUE(has(err("{ triangles = 0 }").message, "triangles"));
+    EXPECT_TRUE(has(err("{ max_error = -1 }").message, "max_error must be a finite distance >= 0"));
+    EXPECT_TRUE(has(err("0.5").message, "a table"));
+    EXPECT_TRUE(has(err("{ ratio = 0.5, morph = true }").message, "a table"));
+    EXPECT_TRUE(has(err("{ ratio = 0.5, morph = { ratio = 0.5 } }").message, "must be coarser"));
+    EXPECT_TRUE(has(err("{ ratio = 0.5, morph = { ratio = 0.2, morph = { ratio = 0.1 } } }").message, "unknown key 'morph'"));
+    Error e = err("{ ratio = 0.5, morph = { ratoi = 0.2 } }");
+    EXPECT_TRUE(has(e.message, "simplify.morph: unknown key 'ratoi'"));
+    EXPECT_EQ(e.hint, "did you mean 'ratio'?");
+}
