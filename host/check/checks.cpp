@@ -66,6 +66,7 @@ Result<Rendered> render_case(vk::Context& ctx, const fs::path& toml, const graph
     bo.overlay_dirs = opt.overlay_dirs;
     if (t.size) bo.size = *t.size;
     bo.set_values = t.set;
+    bo.cameras = t.cameras;
     for (const auto& [k, val] : v.set) bo.set_values[k] = val;
     auto built = exec::build_graph(toml, bo);
     if (!built) return built.error();

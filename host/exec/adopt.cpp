@@ -57,6 +57,10 @@ Status Executor::adopt_contents(Executor& old) {
     }
     frames_rendered_ = old.frames_rendered_;
     prev_view_proj_ = old.prev_view_proj_;
+    // A reload that changes nothing the picture depends on keeps accumulating.
+    accum_key_ = old.accum_key_;
+    accum_frame_ = old.accum_frame_;
+    if (old.prev_camera_view_proj_.size() == prev_camera_view_proj_.size()) prev_camera_view_proj_ = old.prev_camera_view_proj_;
     if (images.empty() && buffers.empty()) return ok_status();
 
     VK_CHECK(vkResetCommandBuffer(cmd_, 0));

@@ -1,5 +1,6 @@
 #include "exec/bind.hpp"
 
+#include "graph/camera_values.hpp"
 #include "vk/formats.hpp"
 
 #include <algorithm>
@@ -13,13 +14,7 @@ namespace pl::exec {
 using graph::ImageKind;
 using shader::BindingType;
 
-graph::SizeEnv size_env(const graph::GraphDesc& desc, std::array<int, 2> view) {
-    graph::SizeEnv env;
-    env.view_w = view[0];
-    env.view_h = view[1];
-    for (const auto& p : desc.params) env.params[p.name] = p.value[0];
-    return env;
-}
+graph::SizeEnv size_env(const graph::GraphDesc& desc, std::array<int, 2> view) { return graph::make_env(desc, view); }
 
 SourceLoc find_declaration(const std::vector<fs::path>& files, const std::string& name) {
     std::regex word("\\b" + name + "\\b");
@@ -90,6 +85,12 @@ Status bind_pass(const graph::GraphDesc& desc, CompiledPass& cp) {
         br.binding = b;
         if (b.block_name == "PasslabFrame") {
             br.kind = BoundResource::Kind::frame;
+            br.access = Access::uniform_read;
+            cp.bindings.push_back(br);
+            continue;
+        }
+        if (b.block_name == "PasslabCameras") {
+            br.kind = BoundResource::Kind::cameras;
             br.access = Access::uniform_read;
             cp.bindings.push_back(br);
             continue;

@@ -94,7 +94,7 @@ Status compile_pass(CompiledGraph& g, CompiledPass& cp, const BuildOptions& opt)
 
     shader::CompileOptions co;
     for (const auto& d : g.search_dirs) co.include_dirs.push_back(d);
-    co.preamble = preamble_source(g.desc.params);
+    co.preamble = preamble_source(g.desc.params, g.desc.cameras);
     co.defines = pd.defines;
     co.cache_dir = opt.cache_dir;
     auto prog = shader::compile_program(stages, co);
@@ -121,6 +121,8 @@ Result<CompiledGraph> build_graph(const fs::path& preset_toml, const BuildOption
         if (auto st = apply_param_override(g.desc.params, s); !st) return st.error();
     for (const auto& [name, value] : opt.set_values)
         if (auto st = apply_param_value(g.desc.params, name, value, {}); !st) return st.error();
+    for (auto& c : g.desc.cameras)
+        if (auto it = opt.cameras.find(c.name); it != opt.cameras.end()) c = it->second;
     if (opt.size) g.desc.view.size = *opt.size;
     g.view = g.desc.view.size;
 

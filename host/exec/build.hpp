@@ -20,6 +20,7 @@ struct BuildOptions {
     std::optional<std::array<int, 2>> size;  // overrides [view].size
     std::vector<std::string> set;            // "name=value" param overrides
     std::map<std::string, graph::Value> set_values;  // same, from a test case
+    std::map<std::string, graph::CameraDesc> cameras;  // a test case's camera overrides (replace by name)
     std::filesystem::path cache_dir;         // SPIR-V cache; empty = none
     // Folders searched before the preset's own for shader files (exercise overlays).
     std::vector<std::filesystem::path> overlay_dirs;
@@ -27,7 +28,7 @@ struct BuildOptions {
 
 // What a shader binding is bound to.
 struct BoundResource {
-    enum class Kind { frame, params, image, image_prev, buffer, buffer_prev };
+    enum class Kind { frame, params, image, image_prev, buffer, buffer_prev, cameras };
     shader::Binding binding;
     Kind kind = Kind::image;
     std::string resource;  // graph image/buffer name (for *_prev: the history image's name)

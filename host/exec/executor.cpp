@@ -78,7 +78,22 @@ Result<std::unique_ptr<Executor>> Executor::create(vk::Context& ctx, CompiledGra
     }
     ctx.set_label("");
 
-    ex->frame_ubo_ = vk::create_buffer(ctx, sizeof(FrameBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+    // Frame blocks: one slot per distinct (camera, face, render size) a frame uses. A pass sees
+    // at most 6 faces x 16 mip sizes, and at most one per run (group iteration x repeat).
+    const VkDeviceSize align = std::max<VkDeviceSize>(1, ctx.properties().limits.minUniformBufferOffsetAlignment);
+    ex->frame_stride_ = (sizeof(FrameBlock) + align - 1) / align * align;
+    ex->frame_capacity_ = 1;
+    for (const auto& cp : g.passes) {
+        if (!cp.program.reflection.bindings.empty())
+            ex->frame_capacity_ += static_cast<uint32_t>(std::min<size_t>(std::max<size_t>(cp.runs.size(), static_cast<size_t>(cp.repeat)), 6 * 16));
+        const graph::CameraDesc* cam = cp.desc->camera.empty() ? nullptr : g.desc.find_camera(cp.desc->camera);
+        ex->pass_camera_.push_back(cam ? static_cast<int>(cam - g.desc.cameras.data()) : -1);
+    }
+    ex->frame_ubo_ = vk::create_buffer(ctx, ex->frame_stride_ * ex->frame_capacity_, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+    int camera_entries = 0;
+    for (const auto& c : g.desc.cameras) camera_entries += c.faces();
+    ex->cameras_ubo_ = vk::create_buffer(ctx, std::max<VkDeviceSize>(16, camera_entries * sizeof(CameraBlock)),
+                                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
     ex->params_ubo_ = vk::create_buffer(ctx, std::max<uint32_t>(16, g.param_layout.size),
                                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
 
@@ -131,10 +146,24 @@ Status Executor::render(const FrameInput& in) {
     frame_parity_ = frames_rendered_ & 1;
     instance_order_ = in.instance_order;
 
-    // Frame block.
+    // Named cameras follow the current params (the panel may have moved them).
+    auto params = pack_params(g.desc.params, g.param_layout);
+    if (!g.desc.cameras.empty()) {
+        auto cams = eval_cameras(g.desc.cameras, size_env(g.desc, g.view));
+        if (!cams) return cams.error();
+        cameras_ = std::move(cams.value());
+        std::memcpy(cameras_ubo_.mapped, cameras_.entries.data(), cameras_.entries.size() * sizeof(CameraBlock));
+        if (prev_camera_view_proj_.size() != cameras_.entries.size()) {  // first frame: no motion
+            prev_camera_view_proj_.clear();
+            for (const auto& c : cameras_.entries) prev_camera_view_proj_.push_back(c.view_proj);
+        }
+    }
+
+    // Frame block of the view; passes with another camera or render size get their own copies.
     FrameBlock fb{};
     const float w = static_cast<float>(g.view[0]), h = static_cast<float>(g.view[1]);
-    scene::OrbitCamera cam = to_camera(g.desc.view, in.camera ? *in.camera : g.desc.view.orbit);
+    const graph::OrbitCamera orbit = in.camera ? *in.camera : g.desc.view.orbit;
+    scene::OrbitCamera cam = to_camera(g.desc.view, orbit);
     fb.view = cam.view();
     fb.proj = cam.projection(w / h);
     // Jitter in pixels -> clip-space offset (2 px = full NDC width / w ... per unit of w).
@@ -153,9 +182,22 @@ Status Executor::render(const FrameInput& in) {
     fb.delta = static_cast<float>(in.delta);
     fb.index = in.index;
     fb.aspect = w / h;
+    fb.target = fb.resolution;
+
+    // Accumulation: the count restarts whenever what the picture depends on changes.
+    std::vector<uint8_t> key = params;
+    auto append = [&](const void* p, size_t n) { key.insert(key.end(), static_cast<const uint8_t*>(p), static_cast<const uint8_t*>(p) + n); };
+    append(&orbit, sizeof orbit);
+    append(g.view.data(), sizeof g.view);
+    append(cameras_.entries.data(), cameras_.entries.size() * sizeof(CameraBlock));
+    accum_frame_ = !accum_key_.empty() && key == accum_key_ ? accum_frame_ + 1 : 0;
+    accum_key_ = std::move(key);
+    fb.accum_frame = accum_frame_;
+
+    frame_base_ = fb;
+    frame_slots_.assign(1, FrameSlot{-1, static_cast<uint32_t>(g.view[0]), static_cast<uint32_t>(g.view[1])});
     std::memcpy(frame_ubo_.mapped, &fb, sizeof fb);
     prev_view_proj_ = fb.view_proj;
-    auto params = pack_params(g.desc.params, g.param_layout);
     std::memcpy(params_ubo_.mapped, params.data(), std::min<size_t>(params.size(), params_ubo_.size));
     run_baked_ = !baked_ || params != baked_params_;
     baked_ = true;
@@ -168,6 +210,7 @@ Status Executor::render(const FrameInput& in) {
     VK_CHECK(vkBeginCommandBuffer(cmd_, &bi));
     Status st = record_frame(cmd_, in);
     VK_CHECK(vkEndCommandBuffer(cmd_));
+    for (size_t e = 0; e < cameras_.entries.size(); ++e) prev_camera_view_proj_[e] = cameras_.entries[e].view_proj;
     record_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_record).count();
     ctx_.set_label("");
     if (!st) return st;
@@ -208,6 +251,30 @@ Status Executor::render(const FrameInput& in) {
         }
     }
     return ok_status();
+}
+
+Result<VkDeviceSize> Executor::frame_offset(int camera, int layer, VkExtent2D size) {
+    int entry = -1;
+    if (camera >= 0) {
+        const graph::CameraDesc& c = graph_->desc.cameras[static_cast<size_t>(camera)];
+        entry = cameras_.first[static_cast<size_t>(camera)] + (c.cube ? std::max(0, layer) % 6 : 0);
+    }
+    for (size_t k = 0; k < frame_slots_.size(); ++k)
+        if (frame_slots_[k].entry == entry && frame_slots_[k].w == size.width && frame_slots_[k].h == size.height)
+            return static_cast<VkDeviceSize>(k) * frame_stride_;
+    if (frame_slots_.size() >= frame_capacity_)  // cannot happen: the capacity bounds the distinct pairs
+        return make_error("internal: more frame blocks than the " + std::to_string(frame_capacity_) + " allocated");
+    FrameBlock fb = frame_base_;
+    if (entry >= 0) apply_camera(fb, cameras_.entries[static_cast<size_t>(entry)], prev_camera_view_proj_[static_cast<size_t>(entry)]);
+    const float w = static_cast<float>(size.width), h = static_cast<float>(size.height);
+    fb.target = {w, h, 1.0f / w, 1.0f / h};
+    // `resolution` stays the view's for passes without a camera: presets rely on it (a 1x1
+    // analysis pass measuring the view); a camera pass is new and sees its own render area.
+    if (entry >= 0) fb.resolution = fb.target;
+    const VkDeviceSize off = frame_slots_.size() * frame_stride_;
+    std::memcpy(static_cast<uint8_t*>(frame_ubo_.mapped) + off, &fb, sizeof fb);
+    frame_slots_.push_back({entry, size.width, size.height});
+    return off;
 }
 
 Status Executor::record_frame(VkCommandBuffer cb, const FrameInput&) {

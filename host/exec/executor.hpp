@@ -5,6 +5,7 @@
 #pragma once
 
 #include "exec/build.hpp"
+#include "exec/cameras.hpp"
 #include "exec/pipelines.hpp"
 #include "exec/resources.hpp"
 #include "image/image.hpp"
@@ -93,6 +94,12 @@ class Executor {
     // are uploaded fresh (their source may be what changed).
     Status adopt_contents(Executor& old);
     const std::vector<PassTiming>& timings() const { return timings_; }
+    // The named cameras as the last frame saw them (block order: a cube camera has six entries
+    // from cameras_first()[i]), for the panel.
+    const std::vector<CameraBlock>& camera_entries() const { return cameras_.entries; }
+    const std::vector<int>& cameras_first() const { return cameras_.first; }
+    // frame.accum_frame of the last frame: frames since the camera, view size or a param changed.
+    int accum_frame() const { return accum_frame_; }
     // CPU time the last render() spent filling blocks, writing descriptors and recording
     // commands: the host's own cost per frame, before submit and wait.
     double record_ms() const { return record_ms_; }
@@ -110,6 +117,10 @@ class Executor {
     Status create_counters();                    // buffer_readback.cpp
     void record_counter_reads(VkCommandBuffer cb);  // at the end of a frame
     void collect_counters();                       // after its fence
+    // The offset of the frame block a pass iteration sees: pass camera `camera` (an index into
+    // [cameras], -1 = the view's; `layer` picks a cube camera's face) and render size `size`.
+    // Blocks are written into frame_ubo_ as first needed in the frame, one per distinct pair.
+    Result<VkDeviceSize> frame_offset(int camera, int layer, VkExtent2D size);
     Status record_buffer_image_copy(VkCommandBuffer cb, const graph::PassDesc& pd, PhysBuffer* b,
                                     PhysImage* p, const vk::FormatInfo* f, bool to_image);
 
@@ -124,7 +135,23 @@ class Executor {
     bool baked_ = false;
     std::vector<uint8_t> baked_params_;
     bool run_baked_ = true;  // this frame
-    vk::Buffer frame_ubo_, params_ubo_;
+    vk::Buffer frame_ubo_, params_ubo_, cameras_ubo_;
+    // Frame blocks of this frame in frame_ubo_ (slot 0: the view's at the view size).
+    struct FrameSlot {
+        int entry;  // camera block entry, -1 = the view
+        uint32_t w, h;
+    };
+    std::vector<FrameSlot> frame_slots_;
+    uint32_t frame_capacity_ = 1;
+    VkDeviceSize frame_stride_ = sizeof(FrameBlock);
+    FrameBlock frame_base_{};            // this frame's view block, the template of the others
+    CameraEntries cameras_;              // this frame's named cameras
+    std::vector<glm::mat4> prev_camera_view_proj_;  // last frame's, per entry
+    std::vector<int> pass_camera_;       // per pass: index into desc.cameras, -1 = the view
+    // Accumulation reset: what the last frame's picture depended on (params block, orbit
+    // camera, view size, named cameras) and how many frames in a row it stayed the same.
+    std::vector<uint8_t> accum_key_;
+    int accum_frame_ = 0;
     vk::UniqueDescriptorPool pool_;
     vk::UniqueCommandPool cmd_pool_;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;

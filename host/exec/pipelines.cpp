@@ -1,5 +1,7 @@
 #include "exec/pipelines.hpp"
 
+#include "exec/cameras.hpp"
+
 #include "scene/mesh.hpp"
 #include "scene/simplify.hpp"
 #include "vk/check.hpp"
@@ -354,8 +356,10 @@ Result<std::shared_ptr<PassPipeline>> create_pass_pipeline(vk::Context& ctx, con
                                                : VK_POLYGON_MODE_FILL,
         .cullMode = cull,
         // Our projection flips y (see scene/camera.hpp), which keeps CCW-from-outside meshes
-        // counter-clockwise in framebuffer space.
-        .frontFace = pd.front_face == "cw" ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE,
+        // counter-clockwise in framebuffer space. A cube camera's faces are mirror images (the
+        // cube-map convention), so its passes get the opposite front face and cull as written.
+        .frontFace = (pd.front_face == "cw") != renders_cube_faces(g.desc, pd) ? VK_FRONT_FACE_CLOCKWISE
+                                                                             : VK_FRONT_FACE_COUNTER_CLOCKWISE,
         .depthBiasEnable = bias,
         .depthBiasConstantFactor = bias ? pd.depth->bias_constant : 0.0f,
         .depthBiasSlopeFactor = bias ? pd.depth->bias_slope : 0.0f,

@@ -6,11 +6,21 @@
 
 namespace pl::exec {
 
-std::string preamble_source(const std::vector<graph::ParamDesc>& params) {
+std::string cameras_glsl(const std::vector<graph::CameraDesc>& cameras) {
+    if (cameras.empty()) return {};  // no block at all: graphs without cameras compile as before
+    std::string s = kCameraStructGlsl;
+    s += "layout(set = 0, binding = " + std::to_string(kCamerasBinding) + ", std140) uniform PasslabCameras {\n";
+    for (const auto& c : cameras) s += "    PasslabCamera " + c.name + (c.cube ? "[6]" : "") + ";\n";
+    s += "} cameras;\n";
+    return s;
+}
+
+std::string preamble_source(const std::vector<graph::ParamDesc>& params, const std::vector<graph::CameraDesc>& cameras) {
     std::string s;
     s += "#define PASSLAB 1\n";
     s += kFrameBlockGlsl;
     s += params_glsl(params);
+    s += cameras_glsl(cameras);
     s += kPushBlockGlsl;
     // Structs of the host-built scene buffers (types only: no shader pays for them unless it
     // includes raytrace/bvh.glsl, which declares the buffer).

@@ -255,7 +255,25 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter, in
         return ok_status();
     }
 
-    // 3. Descriptors, written by name for this iteration.
+    // 3. Descriptors, written by name for this iteration. The frame block is the pass camera's
+    // (a cube camera's face: the layer rendered, else the iteration) with the render area as
+    // its resolution (compute: the view size).
+    VkExtent2D frame_size{static_cast<uint32_t>(g.view[0]), static_cast<uint32_t>(g.view[1])};
+    int frame_layer = iter;
+    if (pd.kind != graph::PassKind::compute && (!pd.targets.empty() || pd.depth)) {
+        const bool colour = !pd.targets.empty();
+        const Sel& sel = colour ? rv.targets[0] : rv.depth;
+        frame_size = mip_extent(phys_image(colour ? pd.targets[0].image : pd.depth->target.image, false)->image.info(),
+                                static_cast<uint32_t>(std::max(0, sel.mip)));
+        if (sel.layer >= 0) frame_layer = sel.layer;
+    }
+    auto frame_off = frame_offset(pass_camera_[pass_index], frame_layer, frame_size);
+    if (!frame_off) {
+        Error e = frame_off.error();
+        e.pass = pd.name;
+        return e;
+    }
+
     std::vector<VkDescriptorSet> sets(pp.set_layouts.size(), VK_NULL_HANDLE);
     for (size_t s = 0; s < sets.size(); ++s) {
         VkDescriptorSetLayout l = pp.set_layouts[s];
@@ -279,7 +297,11 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter, in
                                .descriptorType = descriptor_type(b.binding.type)};
         switch (b.kind) {
         case BoundResource::Kind::frame:
-            buffer_infos.push_back({frame_ubo_.buffer, 0, VK_WHOLE_SIZE});
+            buffer_infos.push_back({frame_ubo_.buffer, *frame_off, sizeof(FrameBlock)});
+            w.pBufferInfo = &buffer_infos.back();
+            break;
+        case BoundResource::Kind::cameras:
+            buffer_infos.push_back({cameras_ubo_.buffer, 0, VK_WHOLE_SIZE});
             w.pBufferInfo = &buffer_infos.back();
             break;
         case BoundResource::Kind::params:

@@ -22,6 +22,7 @@ const BufferDesc* GraphDesc::find_buffer(const std::string& n) const { return fi
 const MeshDesc* GraphDesc::find_mesh(const std::string& n) const { return find_named(meshes, n); }
 const ParamDesc* GraphDesc::find_param(const std::string& n) const { return find_named(params, n); }
 const PassDesc* GraphDesc::find_pass(const std::string& n) const { return find_named(passes, n); }
+const CameraDesc* GraphDesc::find_camera(const std::string& n) const { return find_named(cameras, n); }
 
 const GroupDesc* GraphDesc::group_of(const std::string& n) const {
     for (const auto& gr : groups)

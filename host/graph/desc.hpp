@@ -27,6 +27,23 @@ struct SizeExpr {
     bool empty() const { return text.empty() && literal.empty(); }
 };
 
+// A float value of a camera: a number or numbers written in the TOML (`literal`), or a text
+// expression over view and params evaluated every frame (graph/sizeexpr.hpp: real arithmetic,
+// `params.dir * 10`, `params.dir.y`, sin, cos, ...). 1..4 components.
+struct FloatExpr {
+    std::string text;             // empty when literal is used
+    std::vector<double> literal;
+    SourceLoc loc;
+    bool empty() const { return text.empty() && literal.empty(); }
+};
+
+// A 3-vector of a camera: one expression giving 3 components (`[1, 2, 3]`,
+// "params.light_dir * 10"), or three scalar ones (`["5 * cos(params.a)", 3, 0]`).
+struct Vec3Expr {
+    std::vector<FloatExpr> parts;  // 1 (a 3-vector) or 3 (one scalar each)
+    SourceLoc loc;
+};
+
 // Where the value of each key of a table was written, so that a check made after parsing (a
 // reference to an image, a shader file, a size) points at the offending value rather than at the
 // start of the table. The parser records every key it reads; nested keys are dotted
@@ -278,7 +295,27 @@ struct PassDesc {
     // the pass runs while it is nonzero, so test-only or optional passes cost nothing when off.
     SizeExpr enabled_when;
     bool bake = false;  // run on an executor's first frame and again only when a param changes
+    std::string camera;  // a [cameras] name: the frame block is that camera's; empty = the view's
     KeyLocs keys;  // "mesh", "indirect", "src", "dst", "image", "groups", "kind", ...
+};
+
+// A named camera of [cameras]: a light's or a probe's view that a pass renders from
+// (`camera = "NAME"`) and that every shader can read (`cameras.NAME`). Evaluated every frame,
+// so its values may follow params.
+// Entries (cameras, cube faces) the cameras block may hold: 16 KiB, the smallest
+// maxUniformBufferRange of any Vulkan device, over 416 bytes per entry (exec/frame_block.hpp
+// asserts the size).
+inline constexpr int kMaxCameraEntries = 39;
+
+struct CameraDesc {
+    std::string name;
+    SourceLoc loc;
+    bool ortho = false;
+    bool cube = false;     // six faces (perspective, 90 degrees, square), standard cube-map orientation
+    Vec3Expr eye, target, up;
+    FloatExpr fov, near, far, aspect, ortho_height;  // empty: the defaults (45, 0.05, 100, 1, 2)
+    KeyLocs keys;  // "eye", "target", "fov", ...
+    int faces() const { return cube ? 6 : 1; }
 };
 
 struct OrbitCamera {
@@ -321,6 +358,7 @@ struct TestDesc {
     double step = 1.0 / 60.0;
     std::map<std::string, Value> set;  // param overrides
     std::optional<OrbitCamera> camera; // overrides [view].camera.orbit
+    std::map<std::string, CameraDesc> cameras;  // `cameras = { sun = { eye = ... } }`: replaced cameras
     std::string pass;                  // image to check; empty = output
     int mip = 0, layer = 0;            // which level and layer of it (probes and checks may override)
     std::string golden;                // path relative to preset
@@ -348,6 +386,7 @@ struct GraphDesc {
     std::vector<MeshDesc> meshes;
     std::vector<PassDesc> passes;
     std::vector<GroupDesc> groups;
+    std::vector<CameraDesc> cameras;  // [cameras], in the order written
     std::string output;  // image shown / written by render
     SourceLoc output_loc;
     std::vector<TestDesc> tests;
@@ -359,6 +398,7 @@ struct GraphDesc {
     const PassDesc* find_pass(const std::string& n) const;
     // The group listing pass `n` (nullptr when it runs on its own).
     const GroupDesc* group_of(const std::string& n) const;
+    const CameraDesc* find_camera(const std::string& n) const;
 };
 
 } // namespace pl::graph

@@ -1,4 +1,4 @@
-// preset.toml -> GraphDesc. Sections: [preset] [view] [params] [images] [buffers] [meshes]
+// preset.toml -> GraphDesc. Sections: [preset] [view] [params] [cameras] [images] [buffers] [meshes]
 // [[pass]] [output] [[test]]; every key is checked (an unknown key is an error, not ignored: a
 // typo such as `fromat` must not silently fall back to a default).
 #include "graph/parse.hpp"
@@ -6,6 +6,7 @@
 #include "graph/parse_parts.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <tuple>
@@ -73,6 +74,9 @@ Status parse_view(const toml::table& t, const std::string& file, GraphDesc& g) {
         if (!(g.view.fov > 0 && g.view.fov < 180)) return c.error("camera: fov must be between 0 and 180 degrees", c.value_loc("fov"));
         if (!(g.view.near > 0)) return c.error("camera: near must be > 0", c.value_loc("near"));
         if (!(g.view.far > g.view.near)) return c.error("camera: far must be greater than near", c.value_loc("far"));
+        // far = inf is an infinite perspective (scene/camera.cpp); an ortho volume must end.
+        if (g.view.ortho && std::isinf(g.view.far))
+            return c.error("camera: an ortho camera needs a finite far (far = inf is for perspective cameras)", c.value_loc("far"));
         if (!(g.view.ortho_height > 0)) return c.error("camera: ortho_height must be > 0", c.value_loc("ortho_height"));
         if (auto s = c.finish(); !s) return s;
     }
@@ -122,7 +126,7 @@ Result<GraphDesc> parse_graph_text(std::string_view text_in, const fs::path& as_
     }
     TableReader top(root, file, "preset.toml");
     // Unknown sections first: a misspelt [imgaes] is the cause of whatever else would fail.
-    if (auto s = top.finish({"preset", "view", "params", "images", "buffers", "meshes", "output", "pass", "group", "test"}); !s)
+    if (auto s = top.finish({"preset", "view", "params", "cameras", "images", "buffers", "meshes", "output", "pass", "group", "test"}); !s)
         return s.error();  // e.g. [[passes]]: "did you mean 'pass'?"
     auto section = [&](const char* key, auto&& fn) -> Status {
         const toml::node* n = top.get(key);
@@ -145,6 +149,7 @@ Result<GraphDesc> parse_graph_text(std::string_view text_in, const fs::path& as_
     Status st = section("preset", [&](const toml::table& t) { return parse_preset(t, file, g); });
     if (st) st = section("view", [&](const toml::table& t) { return parse_view(t, file, g); });
     if (st) st = section("params", [&](const toml::table& t) { return parse_params(t, file, g); });
+    if (st) st = section("cameras", [&](const toml::table& t) { return parse_cameras(t, file, g); });
     if (st) st = section("images", [&](const toml::table& t) { return parse_images(t, file, g); });
     if (st) st = section("buffers", [&](const toml::table& t) { return parse_buffers(t, file, g); });
     if (st) st = section("meshes", [&](const toml::table& t) { return parse_meshes(t, file, g); });
@@ -162,6 +167,7 @@ Result<GraphDesc> parse_graph_text(std::string_view text_in, const fs::path& as_
     std::stable_sort(g.images.begin(), g.images.end(), by_position);
     std::stable_sort(g.buffers.begin(), g.buffers.end(), by_position);
     std::stable_sort(g.meshes.begin(), g.meshes.end(), by_position);
+    std::stable_sort(g.cameras.begin(), g.cameras.end(), by_position);
     return g;
 }
 

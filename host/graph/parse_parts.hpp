@@ -21,6 +21,9 @@ Status parse_orbit(TableReader& r, OrbitCamera& o);                             
 // One entry of a test's `checks = [...]` (or of `probes = [...]`, with forced_kind "probe"),
 // strictly: the kind's keys only, each type- and range-checked.                      // parse_checks.cpp
 Status parse_check(const toml::table& t, TableReader& owner, CheckDesc& c, const char* forced_kind);
+Status parse_cameras(const toml::table& t, const std::string& file, GraphDesc& g);    // parse_cameras.cpp
+// The keys of one camera, read over `c` (a test's override starts from the graph's camera).
+Status parse_camera(TableReader& r, CameraDesc& c);                                   // parse_cameras.cpp
 
 // A GLSL identifier: [A-Za-z_][A-Za-z0-9_]*.
 bool is_identifier(const std::string& s);

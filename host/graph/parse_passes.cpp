@@ -370,6 +370,8 @@ Status parse_pass_body(const toml::table& t, const std::string& file, GraphDesc&
         }
     }
     if (auto s = r.boolean("bake", p.bake); !s) return s;
+    if (auto s = r.str("camera", p.camera); !s) return s;
+    if (r.has("camera") && p.camera.empty()) return r.error(what + ": camera must name a camera of [cameras]", r.value_loc("camera"));
     return r.finish();
 }
 

@@ -6,6 +6,33 @@ namespace pl::graph {
 
 namespace {
 
+// cameras = { sun = { eye = [...] } }: each names a camera of [cameras]; its keys are read over
+// a copy of that camera, so what is absent keeps the graph's values.
+Status parse_test_cameras(TableReader& r, const std::string& file, const GraphDesc& g, TestDesc& d) {
+    auto cams = r.table("cameras", "a table { NAME = { eye = [...], ... } }");
+    if (!cams) return cams.error();
+    if (!*cams) return ok_status();
+    TableReader names_r(**cams, file, r.what() + " cameras");
+    for (auto&& [k, v] : **cams) {
+        std::string name(k.str());
+        const CameraDesc* base = g.find_camera(name);
+        if (!base) {
+            std::vector<std::string> names;
+            for (const auto& c : g.cameras) names.push_back(c.name);
+            Error e = r.error(r.what() + ": camera '" + name + "' does not exist", names_r.key_loc(name));
+            suggest(e, name, names, "cameras", "the graph declares no [cameras]");
+            return e;
+        }
+        const toml::table* ct = v.as_table();
+        if (!ct) return r.error(r.what() + ": cameras." + name + " must be a table { eye = [...], ... }, not " + type_name(v), r.loc_of(v));
+        CameraDesc c = *base;
+        TableReader cr(*ct, file, r.what() + " camera '" + name + "'", &c.keys);
+        if (auto s = parse_camera(cr, c); !s) return s;
+        d.cameras[name] = std::move(c);
+    }
+    return ok_status();
+}
+
 Status parse_test_body(const toml::table& t, const std::string& file, GraphDesc& g, TestDesc& d) {
     std::string what = "[[test]]";
     if (const toml::node* n = t.get("name"); n && n->is_string()) what = "test '" + *n->value<std::string>() + "'";
@@ -50,6 +77,7 @@ Status parse_test_body(const toml::table& t, const std::string& file, GraphDesc&
         if (auto s = parse_orbit(cr, o); !s) return s;
         d.camera = o;
     }
+    if (auto s = parse_test_cameras(r, file, g, d); !s) return s;
     if (auto s = r.str("pass", d.pass); !s) return s;
     if (auto s = r.integer("mip", d.mip, 0, 15); !s) return s;  // which level/layer `pass` means
     if (auto s = r.integer("layer", d.layer, 0, 2047); !s) return s;

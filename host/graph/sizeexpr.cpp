@@ -1,22 +1,35 @@
 // A recursive-descent evaluator over the expression text. No AST: expressions are a few tokens
 // long and evaluated once per (re)build, and evaluating while parsing keeps errors next to the
-// token that caused them.
+// token that caused them. One evaluator serves integer sizes (int64_t: floor division, overflow
+// checks) and float expressions (double: camera values), so both have the same grammar, names
+// and error messages; the few differences are the `if constexpr (kFloat)` branches.
 #include "graph/sizeexpr.hpp"
 
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <type_traits>
 
 namespace pl::graph {
 
 namespace {
 
-using Vec = std::vector<int64_t>;
-
 int64_t floor_div(int64_t x, int64_t y) { return x / y - ((x % y != 0) && ((x < 0) != (y < 0))); }
 int64_t floor_mod(int64_t x, int64_t y) { return x - floor_div(x, y) * y; }
 
+bool is_float_function(const std::string& id) {
+    for (const char* f : {"sin", "cos", "tan", "sqrt", "abs", "radians", "normalize"})
+        if (id == f) return true;
+    return false;
+}
+
+template <class T>
 class Evaluator {
+    using Vec = std::vector<T>;
+    static constexpr bool kFloat = std::is_same_v<T, double>;
+
   public:
-    Evaluator(const SizeExpr& e, const SizeEnv& env) : s_(e.text), env_(env), loc_(e.loc) {}
+    Evaluator(const std::string& text, const SourceLoc& loc, const SizeEnv& env) : s_(text), env_(env), loc_(loc) {}
 
     Result<Vec> run() {
         auto v = expr();
@@ -41,7 +54,7 @@ class Evaluator {
     Error fail(const std::string& msg, size_t at) {
         SourceLoc l = loc_;
         if (l.col > 0) l.col += static_cast<int>(at) + 1;  // +1: the opening quote
-        return make_error("size expression \"" + s_ + "\": " + msg, l);
+        return make_error(std::string(kFloat ? "expression" : "size expression") + " \"" + s_ + "\": " + msg, l);
     }
     std::nullopt_t set(Error e) {
         err_ = std::move(e);
@@ -65,29 +78,78 @@ class Evaluator {
         size_t n = std::max(a.size(), b.size());
         Vec r(n);
         for (size_t k = 0; k < n; ++k) {
-            int64_t x = a.size() == 1 ? a[0] : a[k], y = b.size() == 1 ? b[0] : b[k];
-            bool overflow = false;
-            switch (op) {
-            case '+': overflow = __builtin_add_overflow(x, y, &r[k]); break;
-            case '-': overflow = __builtin_sub_overflow(x, y, &r[k]); break;
-            case '*': overflow = __builtin_mul_overflow(x, y, &r[k]); break;
-            case '/':
-            case '%':
-            case 'c':
-                if (y == 0) return set(fail("division by zero", at));
-                if (x == INT64_MIN && y == -1) overflow = true;
-                else if (op == '/') r[k] = floor_div(x, y);
-                else if (op == '%') r[k] = floor_mod(x, y);
-                else r[k] = -floor_div(-x, y);  // ceil(x / y); x > INT64_MIN here
-                break;
-            case 'l':  // log2(x): one operand, the other is a dummy
-                if (x < 1) return set(fail("log2 needs a value of at least 1, not " + std::to_string(x), at));
-                r[k] = 63 - __builtin_clzll(static_cast<uint64_t>(x));  // floor(log2(x))
-                break;
-            case 'm': r[k] = std::min(x, y); break;
-            case 'M': r[k] = std::max(x, y); break;
+            T x = a.size() == 1 ? a[0] : a[k], y = b.size() == 1 ? b[0] : b[k];
+            if constexpr (kFloat) {
+                if (op == 'l' && !(x > 0)) return set(fail("log2 needs a value > 0", at));
+                if (!apply_float(x, y, op, r[k])) return set(fail("division by zero", at));
+                if (!std::isfinite(r[k])) return set(fail("the value is too large", op_at));
+            } else {
+                bool overflow = false;
+                switch (op) {
+                case '+': overflow = __builtin_add_overflow(x, y, &r[k]); break;
+                case '-': overflow = __builtin_sub_overflow(x, y, &r[k]); break;
+                case '*': overflow = __builtin_mul_overflow(x, y, &r[k]); break;
+                case '/':
+                case '%':
+                case 'c':
+                    if (y == 0) return set(fail("division by zero", at));
+                    if (x == INT64_MIN && y == -1) overflow = true;
+                    else if (op == '/') r[k] = floor_div(x, y);
+                    else if (op == '%') r[k] = floor_mod(x, y);
+                    else r[k] = -floor_div(-x, y);  // ceil(x / y); x > INT64_MIN here
+                    break;
+                case 'l':  // log2(x): one operand, the other is a dummy
+                    if (x < 1) return set(fail("log2 needs a value of at least 1, not " + std::to_string(x), at));
+                    r[k] = 63 - __builtin_clzll(static_cast<uint64_t>(x));  // floor(log2(x))
+                    break;
+                case 'm': r[k] = std::min(x, y); break;
+                case 'M': r[k] = std::max(x, y); break;
+                }
+                if (overflow) return set(fail("the value is too large", op_at));
             }
-            if (overflow) return set(fail("the value is too large", op_at));
+        }
+        return r;
+    }
+
+    // Real arithmetic; false on division by zero. % and ceil_div floor like their integer forms.
+    static bool apply_float(double x, double y, char op, double& r) {
+        switch (op) {
+        case '+': r = x + y; return true;
+        case '-': r = x - y; return true;
+        case '*': r = x * y; return true;
+        case 'm': r = std::min(x, y); return true;
+        case 'M': r = std::max(x, y); return true;
+        case 'l': r = std::log2(x); return true;  // x > 0: checked by the caller
+        default: break;
+        }
+        if (y == 0) return false;
+        r = op == '/' ? x / y : op == '%' ? x - std::floor(x / y) * y : std::ceil(x / y);
+        return true;
+    }
+
+    // Float expressions only: sin cos tan sqrt abs radians normalize, per component except
+    // normalize (the vector divided by its length).
+    std::optional<Vec> call1(const std::string& fn, size_t at) {
+        ws();
+        if (i_ >= s_.size() || s_[i_] != '(') return set(fail(fn + " takes one argument: " + fn + "(x)", at));
+        ++i_;
+        auto a = expr();
+        if (!a) return a;
+        ws();
+        if (i_ >= s_.size() || s_[i_] != ')') return set(fail("expected ')' to close " + fn + "(", i_));
+        ++i_;
+        Vec r = *a;
+        if (fn == "normalize") {
+            double len = 0;
+            for (T x : r) len += x * x;
+            if (!(len > 0)) return set(fail("normalize of a zero vector", at));
+            for (T& x : r) x /= std::sqrt(len);
+            return r;
+        }
+        for (T& x : r) {
+            if (fn == "sqrt" && x < 0) return set(fail("sqrt of a negative value", at));
+            x = fn == "sin" ? std::sin(x) : fn == "cos" ? std::cos(x) : fn == "tan" ? std::tan(x)
+              : fn == "sqrt" ? std::sqrt(x) : fn == "abs" ? std::fabs(x) : x * (3.14159265358979323846 / 180.0);
         }
         return r;
     }
@@ -131,7 +193,8 @@ class Evaluator {
             auto v = unary();
             if (v)
                 for (auto& x : *v) {
-                    if (x == INT64_MIN) return set(fail("the value is too large", at));
+                    if constexpr (!kFloat)
+                        if (x == INT64_MIN) return set(fail("the value is too large", at));
                     x = -x;
                 }
             return v;
@@ -175,6 +238,8 @@ class Evaluator {
         if (i_ >= s_.size()) return set(fail("the expression ends where a value was expected", i_));
         size_t at = i_;
         char c = s_[i_];
+        if constexpr (kFloat)
+            if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') return number(at);
         if (std::isdigit(static_cast<unsigned char>(c))) {
             int64_t v = 0;
             while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) {
@@ -184,7 +249,7 @@ class Evaluator {
             }
             if (i_ < s_.size() && (s_[i_] == '.' || std::isalpha(static_cast<unsigned char>(s_[i_]))))
                 return set(fail("sizes are integers: '" + word_at(at) + "' is not one", at));
-            return Vec{v};
+            return Vec{T(v)};
         }
         if (c == '(') {
             ++i_;
@@ -199,30 +264,77 @@ class Evaluator {
             std::string id;
             while (i_ < s_.size() && ident_char(s_[i_])) id += s_[i_++];
             if (id == "min" || id == "max" || id == "ceil_div" || id == "log2") return call(id, at);
-            if (auto l = env_.locals.find(id); l != env_.locals.end()) return Vec{l->second};
-            if (id == "view") return Vec{env_.view_w, env_.view_h};
-            if (id == "view.w" || id == "view.x") return Vec{env_.view_w};
-            if (id == "view.h" || id == "view.y") return Vec{env_.view_h};
+            if (auto l = env_.locals.find(id); l != env_.locals.end()) return Vec{T(l->second)};
+            if constexpr (kFloat)
+                if (is_float_function(id)) return call1(id, at);
+            if (id == "view") return Vec{T(env_.view_w), T(env_.view_h)};
+            if (id == "view.w" || id == "view.x") return Vec{T(env_.view_w)};
+            if (id == "view.h" || id == "view.y") return Vec{T(env_.view_h)};
+            if constexpr (kFloat)
+                if (auto v = float_param(id)) return v;
             if (id.rfind("params.", 0) == 0) {
                 auto p = env_.params.find(id.substr(7));
                 if (p != env_.params.end()) {
                     double v = p->second;
                     if (!(v > -9.2e18 && v < 9.2e18)) return set(fail("param '" + p->first + "' is out of range", at));
-                    return Vec{static_cast<int64_t>(v)};  // floats truncate toward zero
+                    return Vec{T(static_cast<int64_t>(v))};  // floats truncate toward zero
                 }
             }
             Error e = fail("unknown name '" + id + "'", at);
-            auto names = size_names(env_);
+            auto names = kFloat ? float_names(env_) : size_names(env_);
             suggest(e, id, names, "names");
             return set(std::move(e));
         }
         return set(fail("unexpected '" + std::string(1, c) + "'", at));
     }
 
+    // A decimal number: 2, 0.5, .5, 1e-3.
+    std::optional<Vec> number(size_t at) {
+        const char* begin = s_.c_str() + at;
+        char* end = nullptr;
+        double v = std::strtod(begin, &end);
+        if (end == begin) return set(fail("'" + word_at(at) + "' is not a number", at));
+        i_ = at + static_cast<size_t>(end - begin);
+        if (i_ < s_.size() && (std::isalpha(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_'))
+            return set(fail("'" + word_at(at) + "' is not a number", at));
+        if (!std::isfinite(v)) return set(fail("the number is too large", at));
+        return Vec{T(v)};
+    }
+
+    // params.NAME (every component of a vector param) or params.NAME.x (one: x y z w or r g b a).
+    std::optional<Vec> float_param(const std::string& id) const {
+        if (id.rfind("params.", 0) != 0) return std::nullopt;
+        std::string name = id.substr(7);
+        if (auto p = env_.vectors.find(name); p != env_.vectors.end()) return p->second;
+        size_t dot = name.rfind('.');
+        if (dot == std::string::npos || dot + 2 != name.size()) return std::nullopt;
+        auto p = env_.vectors.find(name.substr(0, dot));
+        size_t k = std::string("xyzw").find(name[dot + 1]);
+        if (k == std::string::npos) k = std::string("rgba").find(name[dot + 1]);
+        if (p == env_.vectors.end() || k >= p->second.size()) return std::nullopt;
+        return Vec{p->second[k]};
+    }
+
     int col(size_t at) const { return loc_.col > 0 ? loc_.col + 1 + static_cast<int>(at) : static_cast<int>(at) + 1; }
 };
 
 } // namespace
+
+std::vector<std::string> float_names(const SizeEnv& env) {
+    std::vector<std::string> names = {"view", "view.w", "view.h"};
+    for (const auto& [k, v] : env.vectors) {
+        names.push_back("params." + k);
+        for (size_t c = 0; v.size() > 1 && c < v.size(); ++c) names.push_back("params." + k + "." + "xyzw"[c]);
+    }
+    names.insert(names.end(), {"min", "max", "sin", "cos", "tan", "sqrt", "abs", "radians", "normalize"});
+    return names;
+}
+
+Result<std::vector<double>> eval_floats(const FloatExpr& e, const SizeEnv& env) {
+    if (!e.literal.empty()) return e.literal;
+    if (e.text.find_first_not_of(" \t") == std::string::npos) return make_error("empty expression", e.loc);
+    return Evaluator<double>(e.text, e.loc, env).run();
+}
 
 std::vector<std::string> size_names(const SizeEnv& env) {
     std::vector<std::string> names = {"view", "view.w", "view.h"};
@@ -235,7 +347,7 @@ std::vector<std::string> size_names(const SizeEnv& env) {
 Result<std::vector<int64_t>> eval_size(const SizeExpr& e, const SizeEnv& env) {
     if (!e.literal.empty()) return e.literal;
     if (e.text.find_first_not_of(" \t") == std::string::npos) return make_error("empty size expression", e.loc);
-    return Evaluator(e, env).run();
+    return Evaluator<int64_t>(e.text, e.loc, env).run();
 }
 
 Result<int64_t> eval_scalar(const SizeExpr& e, const SizeEnv& env) {

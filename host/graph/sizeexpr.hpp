@@ -6,6 +6,9 @@
 // full mip chain).
 // Errors point at the offending token: the SizeExpr's loc is the start of the TOML value (the
 // opening quote), so the column of a token is loc.col + 1 + its offset in the string.
+// Float expressions (camera eye/target/fov ...) use the same grammar over doubles: decimal
+// numbers, real division, vector params as vectors (`params.dir * 10`, `params.dir.y`), and
+// sin cos tan sqrt abs radians normalize.
 #pragma once
 
 #include "graph/desc.hpp"
@@ -20,6 +23,7 @@ struct SizeEnv {
     // Names that only some expressions see: `iteration`, `iteration_count` and
     // `group_iteration` in a pass's mip/layer selections (exec/views.cpp).
     std::map<std::string, int64_t> locals;
+    std::map<std::string, std::vector<double>> vectors;  // float expressions: every component
 };
 
 struct Extent {
@@ -35,5 +39,9 @@ Result<Extent> eval_extent(const SizeExpr& e, const SizeEnv& env, int dims);
 
 // The names an expression may use in `env` (for messages and docs).
 std::vector<std::string> size_names(const SizeEnv& env);
+
+// A float expression: 1..4 components, finite.
+Result<std::vector<double>> eval_floats(const FloatExpr& e, const SizeEnv& env);
+std::vector<std::string> float_names(const SizeEnv& env);
 
 } // namespace pl::graph

@@ -3,6 +3,7 @@
 #include "graph/validate_parts.hpp"
 
 #include "vk/clear_value.hpp"
+#include "graph/camera_values.hpp"
 #include "vk/formats.hpp"
 
 #include <algorithm>
@@ -279,12 +280,7 @@ Status check_tests(const GraphDesc& g, const DeclaredNames& n, const SizeEnv& en
 }
 
 SizeEnv base_env(const GraphDesc& g, const ValidateOptions& opt) {
-    SizeEnv env;
-    std::array<int, 2> view = opt.view_size ? *opt.view_size : g.view.size;
-    env.view_w = view[0];
-    env.view_h = view[1];
-    for (const auto& p : g.params) env.params[p.name] = p.value[0];
-    return env;
+    return make_env(g, opt.view_size ? *opt.view_size : g.view.size);
 }
 
 // Host-built buffers (generator = "bvh" | "triangles") name the meshes they are built from.
@@ -311,6 +307,7 @@ Status validate_graph(const GraphDesc& g, const ValidateOptions& opt) {
     if (auto s = validate_sizes(g, env, {}, {}); !s) return s;
     if (auto s = validate_passes(g, opt, names); !s) return s;
     if (auto s = validate_groups(g, names); !s) return s;
+    if (auto s = validate_cameras(g, env, nullptr); !s) return s;
 
     if (!g.output.empty()) {
         if (!g.find_image(g.output)) {
@@ -328,19 +325,22 @@ Status validate_graph(const GraphDesc& g, const ValidateOptions& opt) {
     if (auto s = check_tests(g, names, env); !s) return s;
     if (opt.per_test_sizes)
         for (const auto& t : g.tests) {
-            if (!t.size && t.set.empty()) continue;
+            if (!t.size && t.set.empty() && t.cameras.empty()) continue;
             SizeEnv te = env;
             if (t.size) te.view_w = (*t.size)[0], te.view_h = (*t.size)[1];
             for (const auto& [k, v] : t.set) {
                 const ParamDesc* p = g.find_param(k);
                 if (const double* d = std::get_if<double>(&v)) te.params[k] = *d;
                 else if (const bool* b = std::get_if<bool>(&v)) te.params[k] = *b ? 1 : 0;
-                else if (const auto* vec = std::get_if<std::vector<double>>(&v); vec && !vec->empty()) te.params[k] = (*vec)[0];
+                else if (const auto* vec = std::get_if<std::vector<double>>(&v); vec && !vec->empty())
+                    te.params[k] = (*vec)[0], te.vectors[k] = *vec;
                 else if (const std::string* s = std::get_if<std::string>(&v); s && p)
                     te.params[k] = static_cast<double>(std::find(p->options.begin(), p->options.end(), *s) - p->options.begin());
+                if (!std::holds_alternative<std::vector<double>>(v)) te.vectors[k] = {te.params[k]};
             }
             std::string context = "in test '" + t.name + "' (" + std::to_string(te.view_w) + "x" + std::to_string(te.view_h) + ")";
             if (auto s = validate_sizes(g, te, context, t.loc); !s) return s;
+            if (auto s = validate_cameras(g, te, &t); !s) return s;
         }
     return ok_status();
 }

@@ -25,5 +25,8 @@ Status validate_groups(const GraphDesc& g, const DeclaredNames& names);  // vali
 // Every size of the graph at one environment: images (sides, memory), buffers (bytes), pass
 // groups/threads/repeat. `context` (e.g. "in test 'x' (64x64)") is added as a note when not empty.
 Status validate_sizes(const GraphDesc& g, const SizeEnv& env, const std::string& context, const SourceLoc& context_loc);
+// Every camera evaluates at `env` (with `test`'s overrides when given); passes name cameras
+// that exist (validate_cameras.cpp).
+Status validate_cameras(const GraphDesc& g, const SizeEnv& env, const TestDesc* test);
 
 } // namespace pl::graph

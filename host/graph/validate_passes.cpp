@@ -19,7 +19,7 @@ namespace {
 // that ignores it is an error: `groups` on a fullscreen pass is a misunderstanding to point out,
 // not something to drop silently.
 const std::set<std::string>& kind_keys(PassKind k) {
-    static const std::set<std::string> raster_common = {"targets", "depth", "stencil", "blend", "clear", "defines", "bind"};
+    static const std::set<std::string> raster_common = {"targets", "depth", "stencil", "blend", "clear", "defines", "bind", "camera"};
     static const std::map<PassKind, std::set<std::string>> keys = [] {
         std::map<PassKind, std::set<std::string>> m;
         m[PassKind::fullscreen] = raster_common;
@@ -28,7 +28,7 @@ const std::set<std::string>& kind_keys(PassKind k) {
         m[PassKind::draw].insert({"vertex", "fragment", "geometry", "tess_control", "tess_eval", "mesh", "vertex_count",
                                   "instances", "indirect", "topology", "patch_points", "cull", "front_face", "polygon",
                                   "line_width"});
-        m[PassKind::compute] = {"compute", "groups", "threads", "indirect", "defines", "bind"};
+        m[PassKind::compute] = {"compute", "groups", "threads", "indirect", "defines", "bind", "camera"};
         m[PassKind::blit] = {"src", "dst", "filter"};
         m[PassKind::copy] = {"src", "dst"};
         m[PassKind::mips] = {"image"};
