@@ -306,6 +306,7 @@ class Evaluator {
         if (id.rfind("params.", 0) != 0) return std::nullopt;
         std::string name = id.substr(7);
         if (auto p = env_.vectors.find(name); p != env_.vectors.end()) return p->second;
+        if (auto p = env_.params.find(name); p != env_.params.end()) return Vec{p->second};  // untruncated
         size_t dot = name.rfind('.');
         if (dot == std::string::npos || dot + 2 != name.size()) return std::nullopt;
         auto p = env_.vectors.find(name.substr(0, dot));
@@ -322,6 +323,8 @@ class Evaluator {
 
 std::vector<std::string> float_names(const SizeEnv& env) {
     std::vector<std::string> names = {"view", "view.w", "view.h"};
+    for (const auto& [k, v] : env.params)
+        if (!env.vectors.count(k)) names.push_back("params." + k);
     for (const auto& [k, v] : env.vectors) {
         names.push_back("params." + k);
         for (size_t c = 0; v.size() > 1 && c < v.size(); ++c) names.push_back("params." + k + "." + "xyzw"[c]);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 using namespace pl;
 using namespace pl::graph;
@@ -220,4 +221,56 @@ TEST(SizeExpr, LocalsAreNamesOnlySomeExpressionsSee) {
     auto near = eval_size(text("iteraton"), e);
     ASSERT_FALSE(near);
     EXPECT_NE(near.error().hint.find("iteration"), std::string::npos);
+}
+
+// Float expressions (camera values): the same grammar over doubles.
+namespace {
+SizeEnv float_env() {
+    SizeEnv e = env();
+    e.vectors["dir"] = {0.0, 1.0, 2.0};
+    return e;
+}
+std::vector<double> evalf(const std::string& t) {
+    SizeEnv e = float_env();
+    FloatExpr x;
+    x.text = t;
+    x.loc = {"preset.toml", 7, 10};
+    auto r = eval_floats(x, e);
+    EXPECT_TRUE(r) << t << ": " << (r ? "" : r.error().format());
+    return r ? *r : std::vector<double>{};
+}
+Error float_error(const std::string& t) {
+    FloatExpr x;
+    x.text = t;
+    x.loc = {"preset.toml", 7, 10};
+    auto r = eval_floats(x, float_env());
+    EXPECT_FALSE(r) << t;
+    return r ? Error{} : r.error();
+}
+} // namespace
+
+TEST(FloatExpr, RealArithmeticAndVectorParams) {
+    using D = std::vector<double>;
+    EXPECT_EQ(evalf("1.5 * 2"), (D{3.0}));
+    EXPECT_EQ(evalf("7 / 2"), (D{3.5}));      // real division, not floor
+    EXPECT_EQ(evalf(".5 + 1e-1"), (D{0.6}));
+    EXPECT_EQ(evalf("params.spread"), (D{2.9}));  // not truncated
+    EXPECT_EQ(evalf("params.dir * 10"), (D{0.0, 10.0, 20.0}));
+    EXPECT_EQ(evalf("params.dir.z"), (D{2.0}));
+    EXPECT_EQ(evalf("view / 2"), (D{320.0, 180.0}));
+    EXPECT_NEAR(evalf("cos(radians(60))")[0], 0.5, 1e-12);
+    EXPECT_NEAR(evalf("normalize(params.dir)")[2], 2.0 / std::sqrt(5.0), 1e-12);
+    EXPECT_EQ(evalf("-7 % 2"), (D{1.0}));  // floors like the integer form
+}
+
+TEST(FloatExpr, ErrorsPointAtTheToken) {
+    Error e = float_error("params.dri * 10");
+    EXPECT_EQ(e.loc.col, col_of(0));
+    EXPECT_NE(e.hint.find("params.dir"), std::string::npos) << e.format();
+    e = float_error("1 / (2 - 2)");
+    EXPECT_NE(e.message.find("division by zero"), std::string::npos);
+    e = float_error("sqrt(-1)");
+    EXPECT_NE(e.message.find("sqrt"), std::string::npos);
+    e = float_error("2x");
+    EXPECT_NE(e.message.find("not a number"), std::string::npos);
 }
