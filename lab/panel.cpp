@@ -238,6 +238,7 @@ void draw_panel(LabState& s, exec::Executor& ex, const ViewerTexture* viewer, co
     if (ImGui::CollapsingHeader("Params", ImGuiTreeNodeFlags_DefaultOpen)) params_section(s, ex, preset);
     if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) time_section(s);
     if (ImGui::CollapsingHeader("Passes", ImGuiTreeNodeFlags_DefaultOpen)) passes_section(s, ex);
+    if (ImGui::CollapsingHeader("Cameras", ex.graph().desc.cameras.empty() ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) cameras_section(ex);
     if (ImGui::CollapsingHeader("Images")) viewer_section(s, ex);
     if (!s.status.empty()) ImGui::TextWrapped("%s", s.status.c_str());
     ImGui::TextDisabled("F1 keys, Tab hides this panel");
