@@ -127,17 +127,20 @@ class Evaluator {
         return true;
     }
 
+    // Skips blanks and consumes `c`; else the error (at `at`, or where `c` was expected).
+    bool expect(char c, const std::string& msg, size_t at = std::string::npos) {
+        ws();
+        if (i_ < s_.size() && s_[i_] == c) return ++i_, true;
+        set(fail(msg, at == std::string::npos ? i_ : at));
+        return false;
+    }
+
     // Float expressions only: sin cos tan sqrt abs radians normalize, per component except
     // normalize (the vector divided by its length).
     std::optional<Vec> call1(const std::string& fn, size_t at) {
-        ws();
-        if (i_ >= s_.size() || s_[i_] != '(') return set(fail(fn + " takes one argument: " + fn + "(x)", at));
-        ++i_;
+        if (!expect('(', fn + " takes one argument: " + fn + "(x)", at)) return std::nullopt;
         auto a = expr();
-        if (!a) return a;
-        ws();
-        if (i_ >= s_.size() || s_[i_] != ')') return set(fail("expected ')' to close " + fn + "(", i_));
-        ++i_;
+        if (!a || !expect(')', "expected ')' to close " + fn + "(")) return std::nullopt;
         Vec r = *a;
         if (fn == "normalize") {
             double len = 0;

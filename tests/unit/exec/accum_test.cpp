@@ -39,13 +39,17 @@ struct Lab {
     }
 };
 
-} // namespace
-
-TEST(Accumulation, ResetsWhenAParamTheCameraOrTheSizeChanges) {
+Result<std::unique_ptr<vk::Context>> context() {
     vk::ContextOptions co;
     co.validation = true;
     co.verbose = false;
-    auto ctx = vk::Context::create(co);
+    return vk::Context::create(co);
+}
+
+} // namespace
+
+TEST(Accumulation, ResetsWhenAParamTheCameraOrTheSizeChanges) {
+    auto ctx = context();
     if (!ctx) GTEST_SKIP() << "no Vulkan device: " << ctx.error().message;
     Lab lab{std::move(ctx.value())};
     lab.ex = lab.build("accumulation");
@@ -82,10 +86,7 @@ TEST(Accumulation, ResetsWhenAParamTheCameraOrTheSizeChanges) {
 }
 
 TEST(Accumulation, ANamedCameraFollowingAParamResetsIt) {
-    vk::ContextOptions co;
-    co.validation = true;
-    co.verbose = false;
-    auto ctx = vk::Context::create(co);
+    auto ctx = context();
     if (!ctx) GTEST_SKIP() << "no Vulkan device: " << ctx.error().message;
     Lab lab{std::move(ctx.value())};
     lab.ex = lab.build("cameras");
