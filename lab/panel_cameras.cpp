@@ -55,6 +55,8 @@ void cameras_section(const exec::Executor& ex) {
         ImGui::TextDisabled("no [cameras]");
         return;
     }
+    if (!ex.camera_error().empty())
+        ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.4f, 1.0f), "%s (showing the last valid values)", ex.camera_error().c_str());
     const auto& entries = ex.camera_entries();
     const auto& first = ex.cameras_first();
     if (first.size() != cams.size()) return;  // before the first frame

@@ -149,9 +149,13 @@ Status Executor::render(const FrameInput& in) {
     // Named cameras follow the current params (the panel may have moved them).
     auto params = pack_params(g.desc.params, g.param_layout);
     if (!g.desc.cameras.empty()) {
+        // A param the panel moved to a value a camera cannot take (eye on its target, near = 0)
+        // keeps the last good cameras and says why, rather than ending the live lab; the build
+        // checked the starting values, so a first frame cannot get here.
         auto cams = eval_cameras(g.desc.cameras, size_env(g.desc, g.view));
-        if (!cams) return cams.error();
-        cameras_ = std::move(cams.value());
+        if (!cams && cameras_.entries.empty()) return cams.error();
+        camera_error_ = cams ? std::string() : cams.error().message;
+        if (cams) cameras_ = std::move(cams.value());
         std::memcpy(cameras_ubo_.mapped, cameras_.entries.data(), cameras_.entries.size() * sizeof(CameraBlock));
         if (prev_camera_view_proj_.size() != cameras_.entries.size()) {  // first frame: no motion
             prev_camera_view_proj_.clear();

@@ -100,6 +100,8 @@ class Executor {
     const std::vector<int>& cameras_first() const { return cameras_.first; }
     // frame.accum_frame of the last frame: frames since the camera, view size or a param changed.
     int accum_frame() const { return accum_frame_; }
+    // Why the cameras are last frame's ones (a param gave one an invalid value); empty if not.
+    const std::string& camera_error() const { return camera_error_; }
     // CPU time the last render() spent filling blocks, writing descriptors and recording
     // commands: the host's own cost per frame, before submit and wait.
     double record_ms() const { return record_ms_; }
@@ -152,6 +154,7 @@ class Executor {
     // camera, view size, named cameras) and how many frames in a row it stayed the same.
     std::vector<uint8_t> accum_key_;
     int accum_frame_ = 0;
+    std::string camera_error_;
     vk::UniqueDescriptorPool pool_;
     vk::UniqueCommandPool cmd_pool_;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;

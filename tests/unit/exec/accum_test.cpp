@@ -107,5 +107,13 @@ TEST(Accumulation, ANamedCameraFollowingAParamResetsIt) {
     EXPECT_EQ(step(), 0);
     EXPECT_EQ(lab.ex->camera_entries()[0].position.y, 15.0f);
     EXPECT_EQ(step(), 1);
+    // A value the camera cannot take (its eye on the target) keeps the last good camera.
+    p.value[1] = 0.0;
+    EXPECT_EQ(step(), 0);
+    EXPECT_NE(lab.ex->camera_error().find("camera 'sun': target is the eye"), std::string::npos) << lab.ex->camera_error();
+    EXPECT_EQ(lab.ex->camera_entries()[0].position.y, 15.0f);
+    p.value[1] = 1.0;
+    step();
+    EXPECT_TRUE(lab.ex->camera_error().empty());
     EXPECT_EQ(lab.ctx->validation_message_count(), 0u);
 }
