@@ -130,6 +130,7 @@ Result<CompiledGraph> build_graph(const fs::path& preset_toml, const BuildOption
 
     graph::ValidateOptions vo;
     vo.search_dirs = g.search_dirs;
+    vo.test_reads = !opt.size && opt.set.empty() && opt.set_values.empty();
     if (auto st = graph::validate_graph(g.desc, vo); !st) return st.error();
 
     g.param_layout = layout_params(g.desc.params);
