@@ -25,12 +25,13 @@ Result<fs::path> resolve_preset(const std::string& arg) {
     std::error_code ec;
     fs::path p(arg);
     if (fs::is_directory(p, ec)) {
-        if (fs::exists(p / "preset.toml", ec)) return fs::absolute(p / "preset.toml");
+        // Normalised, so that "." is named after its folder: `render .` writes <folder>.png, not "..png".
+        if (fs::exists(p / "preset.toml", ec)) return fs::absolute(p / "preset.toml").lexically_normal();
         Error e = make_error("folder '" + arg + "' has no preset.toml");
         e.code = ExitCode::user;
         return e;
     }
-    if (fs::is_regular_file(p, ec)) return fs::absolute(p);
+    if (fs::is_regular_file(p, ec)) return fs::absolute(p).lexically_normal();
     // A name: family/name or name, under presets/.
     fs::path root = presets_dir();
     if (fs::exists(root / arg / "preset.toml", ec)) return root / arg / "preset.toml";
