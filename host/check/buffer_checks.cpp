@@ -1,5 +1,7 @@
 #include "check/buffer_checks.hpp"
 
+#include "graph/readable.hpp"
+
 #include <cmath>
 #include <cstring>
 
@@ -41,7 +43,7 @@ Result<Selection> select(const Args& a, size_t words) {
     s.type = type == "uint" ? WordType::uint : type == "int" ? WordType::sint : WordType::f32;
     s.stride = static_cast<size_t>(num(a, "stride", 4));
     s.field = static_cast<size_t>(num(a, "field", 0));
-    size_t elements = (words * 4 >= s.field + 4) ? (words * 4 - s.field - 4) / s.stride + 1 : 0;
+    size_t elements = graph::buffer_elements(words * 4, s.stride, s.field);
     auto range = vec(a, "range");
     if (a.count("index")) s.first = static_cast<size_t>(num(a, "index", 0)), s.count = 1;
     else if (range.size() == 2) s.first = static_cast<size_t>(range[0]), s.count = static_cast<size_t>(range[1]);

@@ -112,8 +112,9 @@ CheckResult range(const image::Image& img, const graph::CheckDesc& c, const std:
         return e;
     });
     r.passed = a.counted > 0 && a.fraction() >= num(c.args, "fraction", 1.0);
-    r.detail = "values in [" + fmt(mn) + ", " + fmt(mx) + "], allowed [" + fmt(lo) + ", " + fmt(hi) + "]" +
-               (finite ? "" : ", NaN/Inf present");
+    // No counted pixel (a mask that selects none) has no values to show: say so instead of [inf, -inf].
+    r.detail = (a.counted ? "values in [" + fmt(mn) + ", " + fmt(mx) + "]" : std::string("no pixel counted")) + ", allowed [" + fmt(lo) + ", " +
+               fmt(hi) + "]" + (finite ? "" : ", NaN/Inf present");
     if (std::string part = describe(a, c.args); !part.empty()) r.detail += "; " + part;
     return r;
 }

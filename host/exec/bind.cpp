@@ -16,17 +16,42 @@ using shader::BindingType;
 
 graph::SizeEnv size_env(const graph::GraphDesc& desc, std::array<int, 2> view) { return graph::make_env(desc, view); }
 
-SourceLoc find_declaration(const std::vector<fs::path>& files, const std::string& name) {
-    std::regex word("\\b" + name + "\\b");
-    for (const auto& f : files) {
-        std::ifstream in(f);
-        std::string line;
-        for (int n = 1; std::getline(in, line); ++n) {
-            if (line.find("uniform") == std::string::npos && line.find("buffer") == std::string::npos)
-                continue;
-            std::smatch m;
-            if (std::regex_search(line, m, word))
-                return {fs::proximate(f).string(), n, static_cast<int>(m.position(0)) + 1};
+namespace {
+
+// `line` with its comments blanked (columns kept); `in_block` carries a /* comment across lines.
+std::string code_of(const std::string& line, bool& in_block) {
+    std::string out = line;
+    for (size_t i = 0; i < out.size(); ++i) {
+        if (in_block) {
+            if (out.compare(i, 2, "*/") == 0) in_block = false, out[i] = out[i + 1] = ' ', ++i;
+            else out[i] = ' ';
+        } else if (out.compare(i, 2, "//") == 0) {
+            std::fill(out.begin() + static_cast<long>(i), out.end(), ' ');
+            break;
+        } else if (out.compare(i, 2, "/*") == 0) {
+            in_block = true, out[i] = out[i + 1] = ' ', ++i;
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+SourceLoc find_declaration(const std::vector<fs::path>& files, const std::vector<std::string>& names) {
+    for (const auto& name : names) {
+        if (name.empty()) continue;
+        std::regex word("\\b" + name + "\\b");
+        for (const auto& f : files) {
+            std::ifstream in(f);
+            std::string raw;
+            bool in_block = false;
+            for (int n = 1; std::getline(in, raw); ++n) {
+                // Only code counts: a comment that says "the scene buffer" is not a declaration.
+                std::string line = code_of(raw, in_block);
+                if (line.find("uniform") == std::string::npos && line.find("buffer") == std::string::npos) continue;
+                std::smatch m;
+                if (std::regex_search(line, m, word)) return {fs::proximate(f).string(), n, static_cast<int>(m.position(0)) + 1};
+            }
         }
     }
     return {};
@@ -71,8 +96,10 @@ const char* kind_name(ImageKind k) {
 
 Status bind_pass(const graph::GraphDesc& desc, CompiledPass& cp) {
     const graph::PassDesc& pd = *cp.desc;
-    auto err = [&](const std::string& msg, const std::string& name) {
-        Error e = make_error(msg, find_declaration(cp.program.dependencies, name));
+    // Located at the shader's declaration: the graph name, else the shader's instance or block
+    // name (`} scene;` of `buffer PlScene {` is on a line of its own).
+    auto err = [&](const std::string& msg, const std::string& name, const shader::Binding* b = nullptr) {
+        Error e = make_error(msg, find_declaration(cp.program.dependencies, {name, b ? b->name : "", b ? b->block_name : ""}));
         if (!e.loc.known()) e.loc = pd.loc, e.source_line = read_source_line(pd.loc.file, pd.loc.line);
         e.pass = pd.name;
         e.resource = name;
@@ -127,8 +154,10 @@ Status bind_pass(const graph::GraphDesc& desc, CompiledPass& cp) {
             if (!buf) {
                 std::vector<std::string> names;
                 for (const auto& x : desc.buffers) names.push_back(x.name);
-                Error e = err("shader block '" + name + "' is not a buffer of the graph", name);
+                Error e = err("shader block '" + name + "' is not a buffer of the graph", name, &b);
                 suggest(e, name, names, "buffers", "the graph declares no [buffers]");
+                if (e.hint.empty())
+                    e.hint = "declare [buffers] " + name + " = { ... }" + (names.empty() ? "" : ", or bind the block to one: bind = { " + b.name + " = \"" + names[0] + "\" }");
                 return e;
             }
             br.kind = prev ? BoundResource::Kind::buffer_prev : BoundResource::Kind::buffer;

@@ -14,8 +14,9 @@ Status bind_pass(const graph::GraphDesc& desc, CompiledPass& pass);
 // The environment size expressions are evaluated in: view size and param values.
 graph::SizeEnv size_env(const graph::GraphDesc& desc, std::array<int, 2> view);
 
-// Finds "file:line:col" of the declaration of `name` among `files` (first line that mentions
-// the name together with `uniform` or `buffer`), for errors about shader resources.
-SourceLoc find_declaration(const std::vector<std::filesystem::path>& files, const std::string& name);
+// Finds "file:line:col" of the declaration of the first of `names` found among `files` (the
+// first line whose code, comments aside, mentions it together with `uniform` or `buffer`), for
+// errors about shader resources.
+SourceLoc find_declaration(const std::vector<std::filesystem::path>& files, const std::vector<std::string>& names);
 
 } // namespace pl::exec

@@ -25,12 +25,13 @@ Result<fs::path> resolve_preset(const std::string& arg) {
     std::error_code ec;
     fs::path p(arg);
     if (fs::is_directory(p, ec)) {
-        if (fs::exists(p / "preset.toml", ec)) return fs::absolute(p / "preset.toml");
+        // Normalised, so that "." is named after its folder: `render .` writes <folder>.png, not "..png".
+        if (fs::exists(p / "preset.toml", ec)) return fs::absolute(p / "preset.toml").lexically_normal();
         Error e = make_error("folder '" + arg + "' has no preset.toml");
         e.code = ExitCode::user;
         return e;
     }
-    if (fs::is_regular_file(p, ec)) return fs::absolute(p);
+    if (fs::is_regular_file(p, ec)) return fs::absolute(p).lexically_normal();
     // A name: family/name or name, under presets/.
     fs::path root = presets_dir();
     if (fs::exists(root / arg / "preset.toml", ec)) return root / arg / "preset.toml";
@@ -132,6 +133,7 @@ Result<CompiledGraph> build_graph(const fs::path& preset_toml, const BuildOption
 
     graph::ValidateOptions vo;
     vo.search_dirs = g.search_dirs;
+    vo.test_reads = !opt.size && opt.set.empty() && opt.set_values.empty();
     if (auto st = graph::validate_graph(g.desc, vo); !st) return st.error();
 
     g.param_layout = layout_params(g.desc.params);

@@ -4,6 +4,16 @@
 
 namespace pl::exec {
 
+namespace {
+
+// "200000000 bytes (190.7 MiB)"; below a MiB the exact count says it all ("65536 bytes").
+std::string bytes_text(VkDeviceSize n) {
+    std::string exact = std::to_string(n) + " bytes";
+    return n >= (VkDeviceSize(1) << 20) ? exact + " (" + graph::human_bytes(double(n)) + ")" : exact;
+}
+
+} // namespace
+
 Status check_binding_limits(const VkPhysicalDeviceLimits& lim, const std::string& device, const CompiledGraph& g,
                             const std::map<std::string, VkDeviceSize>& sizes) {
     for (const auto& cp : g.passes) {
@@ -16,10 +26,9 @@ Status check_binding_limits(const VkPhysicalDeviceLimits& lim, const std::string
             const VkDeviceSize size = it->second;
             const VkDeviceSize limit = uniform ? lim.maxUniformBufferRange : lim.maxStorageBufferRange;
             if (size <= limit) continue;
-            Error e = make_error("buffer '" + d->name + "' is " + std::to_string(size) + " bytes (" + graph::human_bytes(double(size)) +
-                                     "), more than this device binds as a " + (uniform ? "uniform" : "storage") + " buffer: " +
-                                     (uniform ? "maxUniformBufferRange" : "maxStorageBufferRange") + " = " + std::to_string(limit) +
-                                     " bytes (" + graph::human_bytes(double(limit)) + ") on " + device,
+            Error e = make_error("buffer '" + d->name + "' is " + bytes_text(size) + ", more than this device binds as a " +
+                                     (uniform ? "uniform" : "storage") + " buffer: " + (uniform ? "maxUniformBufferRange" : "maxStorageBufferRange") +
+                                     " = " + bytes_text(limit) + " on " + device,
                                  d->keys.at(d->generator.empty() ? "size" : "generator", d->loc));  // a built buffer has no size key
             e.pass = cp.desc->name;
             e.resource = d->name;

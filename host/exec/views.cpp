@@ -5,27 +5,6 @@
 
 namespace pl::exec {
 
-uint32_t full_mip_count(uint32_t w, uint32_t h, uint32_t d) {
-    return 1 + static_cast<uint32_t>(std::floor(std::log2(std::max({w, h, d, 1u}))));
-}
-
-int image_levels(const graph::GraphDesc& g, const graph::ImageDesc& d_in, const graph::SizeEnv& env) {
-    const graph::ImageDesc* d = &d_in;
-    if (!d->alias.empty())
-        if (const graph::ImageDesc* t = g.find_image(d->alias)) d = t;
-    if (!d->file.empty()) return d->mips == 0 ? 0 : d->mips;  // the file decides the size
-    graph::SizeExpr size = d->size;
-    if (size.empty()) {
-        if (d->generator.empty()) size.text = "view";
-        else size.literal = {256, 256};
-    }
-    auto ext = graph::eval_extent(size, env, d->kind == graph::ImageKind::tex3d ? 3 : 2);
-    if (!ext) return d->mips == 0 ? 0 : d->mips;  // reported by size validation
-    uint32_t full = full_mip_count(static_cast<uint32_t>(std::max<int64_t>(1, ext->w)), static_cast<uint32_t>(std::max<int64_t>(1, ext->h)),
-                                   static_cast<uint32_t>(std::max<int64_t>(1, ext->d)));
-    return static_cast<int>(d->mips == 0 ? full : std::min(static_cast<uint32_t>(d->mips), full));
-}
-
 namespace {
 
 // One use of an image in a run, for the same-level check.
@@ -59,9 +38,7 @@ struct Resolver {
         if (d && !d->alias.empty()) d = g.find_image(d->alias);
         return d;
     }
-    int layers_of(const graph::ImageDesc& d) const {
-        return d.kind == graph::ImageKind::cube ? 6 : d.kind == graph::ImageKind::tex2d_array ? std::max(1, d.layers) : 1;
-    }
+    int layers_of(const graph::ImageDesc& d) const { return graph::image_layers(g, d); }
 
     // A mip or layer expression's value, checked against the image's count (0 = unknown).
     Result<int> eval(const graph::SizeExpr& e, const std::string& image, const char* what, int count) const {
@@ -89,7 +66,7 @@ struct Resolver {
         const graph::ImageDesc* d = base_image(a.image);
         if (!d) return s;
         if (!a.mip_expr.empty()) {
-            auto m = eval(a.mip_expr, a.image, "mip", image_levels(g, *d, env));
+            auto m = eval(a.mip_expr, a.image, "mip", graph::image_levels(g, *d, env));
             if (!m) return m.error();
             s.mip = *m;
         }
@@ -107,7 +84,7 @@ struct Resolver {
         const graph::ImageDesc* d = base_image(b.resource);
         if (!d) return s;
         if (!b.view->mip.empty()) {
-            auto m = eval(b.view->mip, b.resource, "mip", image_levels(g, *d, env));
+            auto m = eval(b.view->mip, b.resource, "mip", graph::image_levels(g, *d, env));
             if (!m) return m.error();
             s.mip = *m;
         }

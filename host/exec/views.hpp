@@ -5,15 +5,9 @@
 #pragma once
 
 #include "exec/build.hpp"
-#include "graph/sizeexpr.hpp"
+#include "graph/readable.hpp"
 
 namespace pl::exec {
-
-// The levels an image will have (its `mips`, or the full chain of its evaluated size); 0 when
-// unknown before loading (file images with mips = "full").
-int image_levels(const graph::GraphDesc& g, const graph::ImageDesc& d, const graph::SizeEnv& env);
-// 1 + floor(log2(largest side)): the length of a full mip chain.
-uint32_t full_mip_count(uint32_t w, uint32_t h, uint32_t d);
 
 // Fills cp.runs for every run of the pass; `group_repeat` is its group's count (1 outside one).
 Status resolve_views(const graph::GraphDesc& g, const graph::SizeEnv& env, CompiledPass& cp, int group_repeat);

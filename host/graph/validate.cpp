@@ -283,6 +283,26 @@ SizeEnv base_env(const GraphDesc& g, const ValidateOptions& opt) {
     return make_env(g, opt.view_size ? *opt.view_size : g.view.size);
 }
 
+// The environment a test renders in: its size (else [view].size, whatever --size says) and its
+// param overrides over `env`.
+SizeEnv test_env(const GraphDesc& g, const TestDesc& t, const SizeEnv& env) {
+    SizeEnv te = env;
+    std::array<int, 2> size = t.size ? *t.size : g.view.size;
+    te.view_w = size[0], te.view_h = size[1];
+    for (const auto& [k, v] : t.set) {
+        const ParamDesc* p = g.find_param(k);
+        if (const double* d = std::get_if<double>(&v)) te.params[k] = *d;
+        else if (const bool* b = std::get_if<bool>(&v)) te.params[k] = *b ? 1 : 0;
+        else if (const auto* vec = std::get_if<std::vector<double>>(&v); vec && !vec->empty())
+            te.params[k] = (*vec)[0], te.vectors[k] = *vec;
+        else if (const std::string* s = std::get_if<std::string>(&v); s && p)
+            te.params[k] = static_cast<double>(std::find(p->options.begin(), p->options.end(), *s) - p->options.begin());
+        // Camera expressions read vector params whole (params.dir); scalars are 1-vectors.
+        if (!std::holds_alternative<std::vector<double>>(v)) te.vectors[k] = {te.params[k]};
+    }
+    return te;
+}
+
 // Host-built buffers (generator = "bvh" | "triangles") name the meshes they are built from.
 Status check_buffer_meshes(const GraphDesc& g, const DeclaredNames& n) {
     for (const auto& b : g.buffers)
@@ -323,25 +343,18 @@ Status validate_graph(const GraphDesc& g, const ValidateOptions& opt) {
     }
 
     if (auto s = check_tests(g, names, env); !s) return s;
-    if (opt.per_test_sizes)
-        for (const auto& t : g.tests) {
-            if (!t.size && t.set.empty() && t.cameras.empty()) continue;
-            SizeEnv te = env;
-            if (t.size) te.view_w = (*t.size)[0], te.view_h = (*t.size)[1];
-            for (const auto& [k, v] : t.set) {
-                const ParamDesc* p = g.find_param(k);
-                if (const double* d = std::get_if<double>(&v)) te.params[k] = *d;
-                else if (const bool* b = std::get_if<bool>(&v)) te.params[k] = *b ? 1 : 0;
-                else if (const auto* vec = std::get_if<std::vector<double>>(&v); vec && !vec->empty())
-                    te.params[k] = (*vec)[0], te.vectors[k] = *vec;
-                else if (const std::string* s = std::get_if<std::string>(&v); s && p)
-                    te.params[k] = static_cast<double>(std::find(p->options.begin(), p->options.end(), *s) - p->options.begin());
-                if (!std::holds_alternative<std::vector<double>>(v)) te.vectors[k] = {te.params[k]};
-            }
+    for (const auto& t : g.tests) {
+        bool overrides = t.size || !t.set.empty() || !t.cameras.empty();
+        if (overrides && !opt.per_test_sizes) continue;  // its sizes are not known here
+        SizeEnv te = test_env(g, t, env);
+        if (overrides) {
             std::string context = "in test '" + t.name + "' (" + std::to_string(te.view_w) + "x" + std::to_string(te.view_h) + ")";
             if (auto s = validate_sizes(g, te, context, t.loc); !s) return s;
             if (auto s = validate_cameras(g, te, &t); !s) return s;
         }
+        if (opt.test_reads)
+            if (auto s = validate_test_reads(g, t, te); !s) return s;
+    }
     return ok_status();
 }
 

@@ -20,6 +20,11 @@ struct ValidateOptions {
     // Also evaluate every size at each [[test]]'s size and param overrides, so a test that would
     // make "view/64" zero fails here rather than in the middle of `passlab test`.
     bool per_test_sizes = true;
+    // Also check what each test reads (levels, layers, probe texels, buffer elements) at its size
+    // and overrides. Off for a build whose view size or params were overridden (one test case's
+    // own build, render --size): there [view].size and the param defaults are no longer known,
+    // and the plain build of `check` and of `test` has already judged every case.
+    bool test_reads = true;
 };
 
 Status validate_graph(const GraphDesc& g, const ValidateOptions& opt);

@@ -20,6 +20,9 @@ std::string human_bytes(double bytes);
 // The names one check of test `t` refers to (images, buffers, params) exist and have the right
 // kind; an `expect` expression evaluates at `env`.                                  validate_checks.cpp
 Status validate_check(const GraphDesc& g, const DeclaredNames& n, const TestDesc& t, const CheckDesc& c, const SizeEnv& env);
+// What test `t` reads exists at `env` (its size and overrides): the level and layer of every
+// image it or a check looks at, probe texels, and the elements of every buffer check.
+Status validate_test_reads(const GraphDesc& g, const TestDesc& t, const SizeEnv& env);
 Status validate_passes(const GraphDesc& g, const ValidateOptions& opt, const DeclaredNames& names);
 Status validate_groups(const GraphDesc& g, const DeclaredNames& names);  // validate_groups.cpp
 // Every size of the graph at one environment: images (sides, memory), buffers (bytes), pass

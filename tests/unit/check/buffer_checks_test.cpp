@@ -2,6 +2,7 @@
 // decoding (0xffffffff, negative ints), and each kind's verdict, including the failures.
 #include "check/agreement.hpp"
 #include "check/buffer_checks.hpp"
+#include "check/properties.hpp"
 
 #include <gtest/gtest.h>
 
@@ -131,4 +132,22 @@ TEST(Agreement, MaskAndFraction) {
     Agreement out = tally(4, Mask{&m, 0, true}, 0.1, f);
     EXPECT_EQ(out.counted, 2u);
     EXPECT_EQ(out.passing, 1u);
+}
+
+// A mask that selects no pixel fails a range check and says so (not "values in [inf, -inf]").
+TEST(Agreement, EmptyMaskFailsAndSaysNoPixelCounted) {
+    image::Image img, none;
+    img.width = none.width = 2, img.height = none.height = 1;
+    img.pixels = {0.5f, 0.5f, 0.5f, 1, 0.5f, 0.5f, 0.5f, 1};
+    none.pixels.assign(8, 0.0f);
+    ImageLookup lookup = [&](const std::string&) -> Result<const image::Image*> { return &none; };
+    auto r = image_property(img, make_check("range", {{"mask", std::string("none")}}), lookup);
+    ASSERT_TRUE(r);
+    EXPECT_FALSE(r->passed);
+    EXPECT_NE(r->detail.find("no pixel counted"), std::string::npos) << r->detail;
+    EXPECT_EQ(r->detail.find("inf"), std::string::npos) << r->detail;
+    auto all = image_property(img, make_check("range", {{"mask", std::string("none")}, {"invert_mask", true}}), lookup);
+    ASSERT_TRUE(all);
+    EXPECT_TRUE(all->passed) << all->detail;
+    EXPECT_NE(all->detail.find("values in [0.5, 0.5]"), std::string::npos) << all->detail;
 }

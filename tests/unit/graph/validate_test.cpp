@@ -418,3 +418,48 @@ TEST(Validate, TestCases) {
         EXPECT_EQ(e.loc.line, 16) << c.test << "\n" << e.format();
     }
 }
+
+// What a test reads must exist at the test's own size, or the case could only fail at run time
+// with no location: levels, layers, probe texels and buffer elements, each at its value.
+TEST(Validate, TestReadsExistAtTheTestsSize) {
+    std::string base = with_pass("[buffers]\nwords = { size = 64 }\nrow = { size = \"view.w * 4\" }\nscene = { generator = \"bvh\", meshes = [\"m\"] }\n"
+                                 "[meshes]\nm = { generator = \"cube\" }\n",
+                                 "ldr = {}\nhiz = { format = \"r32f\", mips = \"full\" }\narr = { kind = \"2d-array\", layers = 2, size = 8 }");
+    struct Case {
+        const char* test;
+        const char* says;
+        const char* at;  // "key = value": the error points at the value
+    };
+    for (const Case& c : {
+             Case{"checks = [ { kind = \"probe\", buffer = \"words\", index = 16, type = \"uint\", expect = 0 } ]",
+                  "probe: buffer 'words'[16] is outside the buffer: 64 bytes hold 16 element(s) of 4 bytes", "index = 16"},
+             Case{"checks = [ { kind = \"sum\", buffer = \"words\", range = [2, 4], stride = 16, field = 4, expect = 0 } ]",
+                  "buffer 'words'[2..5] field 4 (stride 16) is outside the buffer: 64 bytes hold 4 element(s) of 16 bytes", "range = [2, 4]"},
+             Case{"size = [4, 4]\nchecks = [ { kind = \"probe\", buffer = \"row\", index = 4, expect = 0 } ]",
+                  "buffer 'row'[4] is outside the buffer: 16 bytes hold 4 element(s)", "index = 4"},
+             Case{"size = [8, 8]\nprobes = [ { px = [0, 0], pass = \"hiz\", mip = 4, expect = [0] } ]",
+                  "probe: image 'hiz' has 4 mips (0..3); mip 4 does not exist", "mip = 4"},
+             Case{"pass = \"hiz\"\nmip = 10\nchecks = [ { kind = \"no_nan\" } ]", "test 't': image 'hiz' has 10 mips (0..9); mip 10 does not exist",
+                  "mip = 10"},
+             Case{"checks = [ { kind = \"range\", pass = \"arr\", layer = 2 } ]", "range: image 'arr' has 2 layers (0..1); layer 2 does not exist",
+                  "layer = 2"},
+             Case{"probes = [ { px = [320, 0], pass = \"hiz\", mip = 1, expect = [0] } ]",
+                  "image 'hiz' is 320x180 at mip 1 in this test; px = [320, 0] is outside it", "px = [320, 0]"},
+         }) {
+        std::string text = base + "[[test]]\nname = \"t\"\n" + c.test + "\n";
+        Error e = invalid(text);
+        EXPECT_TRUE(has(e.message, c.says)) << c.test << "\n" << e.format();
+        EXPECT_TRUE(has(e.message, "test 't'")) << c.test;
+        std::string at = c.at;
+        EXPECT_EQ(e.loc.line, line_of(text, at)) << c.test << "\n" << e.format();
+        EXPECT_EQ(e.loc.col, col_of(text, at) + static_cast<int>(at.find('=')) + 2) << c.test << "\n" << e.format();
+    }
+    // Inside: the last element, the last level and texel, every layer; a host-built buffer is
+    // sized by its build (left to the run); a case's own build (overridden view) skips the reads.
+    EXPECT_TRUE(valid(base + "[[test]]\nname = \"t\"\nchecks = [ { kind = \"probe\", buffer = \"words\", index = 15, expect = 0 }, "
+                             "{ kind = \"probe\", buffer = \"scene\", index = 100000, expect = 0 }, { kind = \"range\", pass = \"arr\", layer = 1 } ]\n"
+                             "probes = [ { px = [0, 0], pass = \"hiz\", mip = 9, expect = [0] }, { px = [639, 359], expect = [0] } ]\n"));
+    ValidateOptions no_reads;
+    no_reads.test_reads = false;
+    EXPECT_TRUE(valid(base + "[[test]]\nname = \"t\"\nchecks = [ { kind = \"probe\", buffer = \"words\", index = 16, expect = 0 } ]\n", no_reads));
+}
