@@ -24,6 +24,24 @@ int check(const std::string& preset, const std::vector<std::string>& set, const 
     bo.overlay_dirs = *overlay;
     auto built = exec::build_graph(*toml, bo);
     if (!built) return report(built.error());
+    // Each test that changes the size, params or cameras builds again with them, as `test` will:
+    // what depends on them (repeat counts, per-iteration mip and layer selections, attachment
+    // sizes at a level) is known only then, and `check` should not pass what `test` refuses.
+    size_t test_builds = 0;
+    for (const auto& t : built->desc.tests) {
+        if (!t.size && t.set.empty() && t.cameras.empty()) continue;
+        exec::BuildOptions tb = bo;
+        if (t.size) tb.size = *t.size;
+        tb.set_values = t.set;
+        tb.cameras = t.cameras;
+        auto per_test = exec::build_graph(*toml, tb);
+        if (!per_test) {
+            Error e = per_test.error();
+            e.notes.push_back("in test '" + t.name + "' (" + t.loc.str() + "), which builds the graph with its own size, set and cameras");
+            return report(e);
+        }
+        ++test_builds;
+    }
     describe_exercise(c, *built);
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (!spirv_dir.empty()) {
@@ -37,9 +55,9 @@ int check(const std::string& preset, const std::vector<std::string>& set, const 
                 std::printf("%s\n", file.string().c_str());
             }
     }
-    std::printf("ok: %s: %zu pass(es), %zu image(s), %zu buffer(s), %zu file(s) read, %.1f ms\n",
+    std::printf("ok: %s: %zu pass(es), %zu image(s), %zu buffer(s), %zu file(s) read, %zu test build(s), %.1f ms\n",
                 toml->string().c_str(), built->passes.size(), built->desc.images.size(),
-                built->desc.buffers.size(), built->dependencies.size(), ms);
+                built->desc.buffers.size(), built->dependencies.size(), test_builds, ms);
     return 0;
 }
 
