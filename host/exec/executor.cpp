@@ -251,7 +251,19 @@ Status Executor::render(const FrameInput& in) {
         double period_ms = ctx_.properties().limits.timestampPeriod * 1e-6;
         for (size_t i : g.order) {
             double ms = r == VK_SUCCESS ? static_cast<double>(ts[2 * i + 1] - ts[2 * i]) * period_ms : 0.0;
-            timings_.push_back({g.passes[i].desc->name, ms});
+            const CompiledPass& cp = g.passes[i];
+            if (cp.group < 0) {
+                timings_.push_back({cp.desc->name, ms});
+                continue;
+            }
+            // A group is timed as a whole (its members interleave every iteration): one row
+            // named after the group and its members, instead of a time on the first member and
+            // zeros on the others.
+            const CompiledGroup& gr = g.groups[static_cast<size_t>(cp.group)];
+            if (i != gr.members.front()) continue;
+            std::string name = "group " + gr.desc->name + " (";
+            for (size_t k = 0; k < gr.members.size(); ++k) name += (k ? ", " : "") + g.passes[gr.members[k]].desc->name;
+            timings_.push_back({name + ") x" + std::to_string(gr.repeat), ms});
         }
     }
     return ok_status();
@@ -343,8 +355,8 @@ Status Executor::record_frame(VkCommandBuffer cb, const FrameInput&) {
     for (size_t i : g.order) {
         const CompiledPass& cp = g.passes[i];
         if (cp.group >= 0) {
-            // A group runs from its first member: every member in listed order, `repeat` times.
-            // Its GPU time is reported on the first member (the others read 0).
+            // A group runs from its first member: every member in listed order, `repeat` times,
+            // timed as a whole (the others' queries are written only to stay valid).
             const CompiledGroup& gr = g.groups[static_cast<size_t>(cp.group)];
             if (i != gr.members.front()) continue;
             ctx_.set_label("group '" + gr.desc->name + "'");
