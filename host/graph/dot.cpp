@@ -85,6 +85,17 @@ std::string to_dot(const GraphDesc& g, const std::vector<PassIO>* io) {
         for (const auto& w : writes)
             if (declared.count(w)) s << "  " << q(pid) << " -> " << q(w) << ";\n";
     }
+    // A [[group]] as a cluster around its members, labelled with its repeat count (and the
+    // order its members run in, which need not be file order).
+    for (const auto& gr : g.groups) {
+        std::string order;
+        for (const auto& m : gr.passes) order += (order.empty() ? "" : ", ") + m;
+        std::string repeat = gr.repeat.empty() ? "1" : size_text(gr.repeat);
+        s << "  subgraph " << q("cluster_group_" + gr.name) << " {\n    label=" << q("group " + gr.name + ", repeat " + repeat + ": " + order)
+          << ";\n    style=rounded;\n";
+        for (const auto& m : gr.passes) s << "    " << q("pass:" + m) << ";\n";
+        s << "  }\n";
+    }
     s << "}\n";
     return s.str();
 }

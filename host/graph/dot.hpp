@@ -1,6 +1,6 @@
 // Graphviz output of a pass graph (`passlab graph PRESET --dot`): passes as boxes, images and
 // buffers as ellipses (history resources dashed, the output doubled), edges resource -> pass
-// for reads and pass -> resource for writes.
+// for reads and pass -> resource for writes; a [[group]] is a cluster around its members.
 #pragma once
 
 #include "graph/desc.hpp"

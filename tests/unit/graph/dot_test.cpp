@@ -91,3 +91,18 @@ TEST(Dot, ShaderReadsAndWritesFromReflection) {
     ASSERT_NE(first, std::string::npos);
     EXPECT_EQ(dot.find("\"pass:accumulate\" -> \"acc\";", first + 1), std::string::npos);
 }
+
+TEST(Dot, GroupIsAClusterAroundItsMembers) {
+    std::string text = std::string(kGraph) + R"(
+[[group]]
+name = "twice"
+repeat = 2
+passes = ["accumulate", "scene"]
+)";
+    auto g = parse_graph_text(text, "t/preset.toml");
+    ASSERT_TRUE(g) << g.error().format();
+    std::string dot = to_dot(*g, nullptr);
+    EXPECT_TRUE(has(dot, "subgraph \"cluster_group_twice\"")) << dot;
+    EXPECT_TRUE(has(dot, "label=\"group twice, repeat 2: accumulate, scene\"")) << dot;
+    EXPECT_TRUE(has(dot, "    \"pass:accumulate\";\n    \"pass:scene\";\n  }")) << dot;
+}
