@@ -1,5 +1,5 @@
 #version 450
-// Per-pixel linked lists, resolve (000_c9f7e5de708ecbb3.txt L4316-4339, "Linked List
+// Per-pixel linked lists, resolve (000_c9f7e5de708ecbb3.txt L4304-4319, "Linked List
 // Traversal": "render a fullscreen quad (or compute shader)"; for each pixel parse its list, sort
 // the fragments and blend them back to front). The sort and blend are in sort_blend.glsl (the
 // exercise). A compute pass, not a fullscreen quad: on lavapipe (Mesa 22.3) the fragment-shader
