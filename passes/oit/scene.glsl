@@ -5,7 +5,7 @@
 //   3-4  two quads whose depth planes cross (an intersection: each is in front on one side);
 //   5-8  a pinwheel of tilted bars, each in front of the previous one where they overlap, so
 //        A < B < C < D < A: a cyclic overlap no per-object order can draw
-//        (000_c9f7e5de708ecbb3.txt L4132-4160 name both failures of sorted blending).
+//        (000_c9f7e5de708ecbb3.txt L4156-4157 name both failures of sorting).
 // With params.stack = k > 0 the first k instances become full-screen quads at distinct depths
 // and the rest vanish: k * W * H fragments, the counted case.
 const int OIT_QUADS = 9;
