@@ -164,7 +164,44 @@ struct Resolver {
             uses.push_back({owner(b.resource), *s, w, b.view != nullptr, layered(b.resource), "binding '" + b.binding.name + "'", l});
         }
         if (auto st = same_level(uses); !st) return st.error();
+        if (auto st = same_render_area(rv); !st) return st.error();
         return rv;
+    }
+
+    // Dynamic rendering has one render area, so every attachment's selected level must have the
+    // same size in this run (a target at mip 2 with a depth at mip 3 cannot be drawn). Checked here,
+    // per run and at the build's size, so `check` reports it at the attachment's value.
+    Status same_render_area(const RunViews& rv) const {
+        const graph::PassDesc& pd = *cp.desc;
+        struct Area {
+            const graph::AttachmentRef* ref;
+            int64_t w, h;
+        };
+        std::vector<Area> areas;
+        auto add = [&](const graph::AttachmentRef& a, int mip) {
+            const graph::ImageDesc* d = base_image(a.image);
+            if (!d) return;
+            auto e = graph::image_extent(g, *d, env);
+            if (!e) return;  // a file image: its size is known when it is loaded
+            const int m = std::max(0, mip);
+            areas.push_back({&a, std::max<int64_t>(1, e->w >> m), std::max<int64_t>(1, e->h >> m)});
+        };
+        for (size_t k = 0; k < pd.targets.size() && k < rv.targets.size(); ++k) add(pd.targets[k], rv.targets[k].mip);
+        if (pd.depth) add(pd.depth->target, rv.depth.mip);
+        for (const Area& a : areas) {
+            const Area& first = areas.front();
+            if (a.w == first.w && a.h == first.h) continue;
+            auto level = [](const graph::AttachmentRef& r, int64_t w, int64_t h) {
+                return "'" + r.image + "' is " + std::to_string(w) + "x" + std::to_string(h);
+            };
+            const std::string when = cp.repeat > 1 || cp.group >= 0 ? at_run() : "";
+            Error e = err("the pass's attachments differ in size" + when + ": " + level(*first.ref, first.w, first.h) + ", " +
+                              level(*a.ref, a.w, a.h) + " (one render area covers them all)",
+                          a.ref->loc, a.ref->image);
+            e.hint = "select levels of the same size (mip) or attachments of the same size";
+            return e;
+        }
+        return ok_status();
     }
 };
 
