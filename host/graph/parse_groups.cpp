@@ -13,12 +13,7 @@ Status parse_group(const toml::table& t, const std::string& file, GraphDesc& g) 
     if (!is_identifier(gr.name))
         return r.error("group name '" + gr.name + "' must be an identifier (letters, digits, _)", r.value_loc("name"));
     gr.loc = r.key_loc("name");
-    for (const auto& other : g.groups)
-        if (other.name == gr.name) {
-            Error e = r.error("a group named '" + gr.name + "' already exists", gr.loc);
-            e.notes.push_back("the first is at " + other.loc.str());
-            return e;
-        }
+    if (auto s = unique_name(r, g.groups, "group", gr.name, gr.loc); !s) return s;
     const std::string what = "group '" + gr.name + "'";
     if (auto s = r.size("repeat", gr.repeat); !s) return s;
     if (gr.repeat.literal.size() > 1)

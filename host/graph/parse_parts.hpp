@@ -32,6 +32,21 @@ bool is_identifier(const std::string& s);
 // with "gl_" or contain "__" (reserved by GLSL). `what` is "param", "image", ...
 Status check_name(const TableReader& section, const std::string& key, const char* what);
 
+// Passes, tests and groups are referred to by name, so each name is used once per kind: "a
+// <kind> named 'x' already exists" at `loc`, with where the first one is written. T has .name
+// and .loc.
+template <class T>
+Status unique_name(const TableReader& r, const std::vector<T>& earlier, const char* kind, const std::string& name,
+                   const SourceLoc& loc) {
+    for (const auto& other : earlier)
+        if (other.name == name) {
+            Error e = r.error(std::string("a ") + kind + " named '" + name + "' already exists", loc);
+            e.notes.push_back("the first is at " + other.loc.str());
+            return e;
+        }
+    return ok_status();
+}
+
 // The compare ops shared by depth tests, stencil faces and comparison samplers.
 const std::vector<std::string>& compare_ops();
 

@@ -236,13 +236,11 @@ Status parse_pass_body(const toml::table& t, const std::string& file, GraphDesc&
     if (p.name.empty()) return r.error("[[pass]] needs name = \"...\"", p.loc);
     if (!is_identifier(p.name)) return r.error("pass name '" + p.name + "' must be an identifier (letters, digits, _)", r.value_loc("name"));
     p.loc = r.key_loc("name");  // the pass is where its name is written
-    for (const auto& other : g.passes)
-        if (other.name == p.name) {
-            Error e = r.error("a pass named '" + p.name + "' already exists", p.loc);
-            e.pass = p.name;
-            e.notes.push_back("the first is at " + other.loc.str());
-            return e;
-        }
+    if (auto s = unique_name(r, g.passes, "pass", p.name, p.loc); !s) {
+        Error e = s.error();
+        e.pass = p.name;
+        return e;
+    }
     std::string kind = "fullscreen";
     if (auto s = r.choice("kind", kind, kKinds); !s) return s;
     p.kind = static_cast<PassKind>(std::find(kKinds.begin(), kKinds.end(), kind) - kKinds.begin());

@@ -41,12 +41,7 @@ Status parse_test_body(const toml::table& t, const std::string& file, GraphDesc&
     if (auto s = r.str("name", d.name); !s) return s;
     if (d.name.empty()) return r.error("[[test]] needs name = \"...\"", d.loc);
     d.loc = r.key_loc("name");
-    for (const auto& other : g.tests)
-        if (other.name == d.name) {
-            Error e = r.error("a test named '" + d.name + "' already exists", d.loc);
-            e.notes.push_back("the first is at " + other.loc.str());
-            return e;
-        }
+    if (auto s = unique_name(r, g.tests, "test", d.name, d.loc); !s) return s;
     std::vector<int64_t> size;
     if (auto s = r.integers("size", size, 2, 2); !s) return s;
     if (!size.empty()) {
