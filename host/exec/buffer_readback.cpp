@@ -18,17 +18,8 @@ std::string overflow_message(const CounterReading& c) {
 
 Result<std::vector<uint32_t>> Executor::read_buffer(const std::string& name) {
     auto it = res_.buffers.find(name);
-    if (it == res_.buffers.end()) {
-        std::vector<std::string> names;
-        for (const auto& [n, gb] : res_.buffers) names.push_back(n);
-        Error e = make_error("no buffer named '" + name + "' in the graph");
-        e.resource = name;
-        suggest(e, name, names, "buffers");
-        return e;
-    }
-    // The physical buffer the last frame wrote (history buffers alternate).
-    int parity = frames_rendered_ > 0 ? (frames_rendered_ - 1) & 1 : 0;
-    PhysBuffer& pb = *it->second.phys[static_cast<size_t>(parity)];
+    if (it == res_.buffers.end()) return no_resource("buffer", name, res_.buffers);
+    PhysBuffer& pb = *it->second.phys[last_parity()];  // history buffers alternate
     VkDeviceSize bytes = pb.buffer.size;
     vk::Buffer staging = vk::create_buffer(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
     Status st = ctx_.run_once(

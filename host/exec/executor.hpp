@@ -167,6 +167,8 @@ class Executor {
     InstanceOrder instance_order_ = InstanceOrder::natural;
     int frame_parity_ = 0;  // which physical image of a history pair is "current"
     int frames_rendered_ = 0;
+    // The physical image or buffer of a history pair the last frame wrote (readback, blit).
+    size_t last_parity() const { return frames_rendered_ > 0 ? static_cast<size_t>((frames_rendered_ - 1) & 1) : 0; }
     glm::mat4 prev_view_proj_{1.0f};
     std::chrono::milliseconds timeout_{std::chrono::seconds(20)};
 };

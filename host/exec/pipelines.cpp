@@ -273,24 +273,6 @@ Result<std::shared_ptr<PassPipeline>> create_pass_pipeline(vk::Context& ctx, con
         if (gi.format->has_stencil) stencil_format = depth_format;
         if (auto s = check_samples(gi); !s) return s.error();
     }
-    // Dynamic rendering has one render area: every attachment must cover it.
-    {
-        std::vector<std::pair<std::string, VkExtent3D>> sizes;
-        auto add = [&](const graph::AttachmentRef& a) {
-            const GraphImage& gi = res.images.at(a.image);
-            VkExtent3D e = gi.extent;
-            e.width = std::max(1u, e.width >> a.mip);
-            e.height = std::max(1u, e.height >> a.mip);
-            sizes.push_back({a.image, e});
-        };
-        for (const auto& t : pd.targets) add(t);
-        if (pd.depth) add(pd.depth->target);
-        for (const auto& [name, e] : sizes)
-            if (e.width != sizes[0].second.width || e.height != sizes[0].second.height)
-                return pass_error(pd, "the pass's attachments differ in size: '" + sizes[0].first + "' is " +
-                                          std::to_string(sizes[0].second.width) + "x" + std::to_string(sizes[0].second.height) +
-                                          ", '" + name + "' is " + std::to_string(e.width) + "x" + std::to_string(e.height));
-    }
     if (refl.fragment_output_count > color_formats.size())
         return pass_error(pd, "the fragment shader writes " + std::to_string(refl.fragment_output_count) +
                                   " colour outputs but the pass has " + std::to_string(color_formats.size()) +

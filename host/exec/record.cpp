@@ -257,7 +257,8 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter, in
 
     // 3. Descriptors, written by name for this iteration. The frame block is the pass camera's
     // (a cube camera's face: the layer rendered, else the iteration) with the render area as
-    // its resolution (compute: the view size).
+    // its resolution (compute: the view size). The same area is the rendering's (step 5):
+    // resolve_views (exec/views) refused attachments whose levels differ in size.
     VkExtent2D frame_size{static_cast<uint32_t>(g.view[0]), static_cast<uint32_t>(g.view[1])};
     int frame_layer = iter;
     if (pd.kind != graph::PassKind::compute && (!pd.targets.empty() || pd.depth)) {
@@ -392,7 +393,7 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter, in
 
     // 5. Raster: dynamic rendering into the pass's targets.
     std::vector<VkRenderingAttachmentInfo> colors;
-    VkExtent2D area{0, 0};
+    VkExtent2D area = frame_size;  // the render area: the first target's level, else the depth's (step 3)
     uint32_t layer_count = 1;
     for (size_t k = 0; k < pd.targets.size(); ++k) {
         const auto& t = pd.targets[k];
@@ -413,10 +414,7 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter, in
             a.resolveImageLayout = r->state.layout(r->range(0, layer));
         }
         colors.push_back(a);
-        if (k == 0) {
-            area = mip_extent(p->image.info(), static_cast<uint32_t>(mip));
-            if (layer == -1) layer_count = p->image.info().layers;
-        }
+        if (k == 0 && layer == -1) layer_count = p->image.info().layers;
     }
     VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     VkRenderingAttachmentInfo stencil{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
@@ -434,12 +432,9 @@ Status Executor::record_pass(VkCommandBuffer cb, size_t pass_index, int iter, in
             stencil = depth;
             stencil.loadOp = pd.clear.stencil ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
         }
-        if (colors.empty()) {
-            area = mip_extent(p->image.info(), static_cast<uint32_t>(mip));
-            if (layer == -1) layer_count = p->image.info().layers;
-        }
+        if (colors.empty() && layer == -1) layer_count = p->image.info().layers;
     }
-    if (area.width == 0) return pass_error(pd, "the pass has no targets and no depth attachment to render into");
+    if (colors.empty() && !pd.depth) return pass_error(pd, "the pass has no targets and no depth attachment to render into");
     VkRenderingInfo ri{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
                        .renderArea = {{0, 0}, area},
                        .layerCount = layer_count,
@@ -523,8 +518,7 @@ Status Executor::check_showable(const std::string& name) const {
 Status Executor::record_blit_to(VkCommandBuffer cb, const std::string& name, VkImage dst, VkExtent2D ext) {
     if (auto s = check_showable(name); !s) return s;
     auto it = res_.images.find(name);
-    int parity = frames_rendered_ > 0 ? (frames_rendered_ - 1) & 1 : 0;
-    PhysImage* p = it->second.phys[static_cast<size_t>(parity)].get();
+    PhysImage* p = it->second.phys[last_parity()].get();
     const auto& info = p->image.info();
     // Formats that cannot be filtered linearly (32-bit float on some GPUs) are shown nearest.
     VkFormatProperties fp;
@@ -545,17 +539,9 @@ Status Executor::record_blit_to(VkCommandBuffer cb, const std::string& name, VkI
 
 Result<image::Image> Executor::read(const std::string& name, int mip, int layer) {
     auto it = res_.images.find(name);
-    if (it == res_.images.end()) {
-        std::vector<std::string> names;
-        for (const auto& [n, gi] : res_.images) names.push_back(n);
-        Error e = make_error("no image named '" + name + "' in the graph");
-        e.resource = name;
-        suggest(e, name, names, "images");
-        return e;
-    }
+    if (it == res_.images.end()) return no_resource("image", name, res_.images);
     GraphImage& gi = it->second;
-    int parity = frames_rendered_ > 0 ? (frames_rendered_ - 1) & 1 : 0;
-    PhysImage* p = gi.phys[static_cast<size_t>(parity)].get();
+    PhysImage* p = gi.phys[last_parity()].get();
     const auto& info = p->image.info();
     if (info.samples != VK_SAMPLE_COUNT_1_BIT) {
         Error e = make_error("image '" + name + "' is multisampled and cannot be read back; read its resolve target");

@@ -73,6 +73,16 @@ struct GraphResources {
     std::map<std::string, GpuMesh> meshes;
 };
 
+// "no image named 'x' in the graph" (kind = "image" or "buffer") with the nearest names of `m`.
+template <class Map> Error no_resource(const char* kind, const std::string& name, const Map& m) {
+    std::vector<std::string> names;
+    for (const auto& [n, r] : m) names.push_back(n);
+    Error e = make_error(std::string("no ") + kind + " named '" + name + "' in the graph");
+    e.resource = name;
+    suggest(e, name, names, std::string(kind) + "s");
+    return e;
+}
+
 // Creates and uploads everything. Errors (unsupported format usage on this device, unreadable
 // image file, bad mesh) name the resource and its line in preset.toml.
 Result<GraphResources> create_resources(vk::Context& ctx, const CompiledGraph& g);
