@@ -6,7 +6,7 @@
 set -eu
 passlab=$1 work=$2
 rm -rf "$work"; mkdir -p "$work"
-n=0
+n=0 nm=0
 for ex in $(find presets -type d -name exercise | sort); do
   preset=$(dirname "$ex")
   name=$(echo "$preset" | tr / _)
@@ -22,7 +22,22 @@ for ex in $(find presets -type d -name exercise | sort); do
   done
   "$passlab" grade "$preset" --exercise "$sol" --out "$work/$name.sol" > "$work/$name.sol.txt" 2>&1 ||
     { echo "FAIL: $ex with the reference files does not pass" >&2; cat "$work/$name.sol.txt" >&2; exit 1; }
+  # Plausible wrong solutions (mistakes/<name>/: the exercise's files with one classic error,
+  # plus expect.txt holding a line the output must contain, normally part of the hint of the
+  # case that catches it). Each must fail, and fail with that hint, so a hint is seen to lead.
+  if [ -d "$preset/mistakes" ]; then
+    for m in "$preset"/mistakes/*/; do
+      m=${m%/}; mname=$(basename "$m")
+      [ -f "$m/expect.txt" ] || { echo "FAIL: $m has no expect.txt" >&2; exit 1; }
+      rc=0; "$passlab" grade "$preset" --exercise "$m" --out "$work/$name.$mname" > "$work/$name.$mname.txt" 2>&1 || rc=$?
+      [ "$rc" = 1 ] || { echo "FAIL: mistake $m: exit $rc, expected 1 (the cases do not catch it)" >&2; cat "$work/$name.$mname.txt" >&2; exit 1; }
+      want=$(head -n 1 "$m/expect.txt")
+      grep -qF -- "$want" "$work/$name.$mname.txt" ||
+        { echo "FAIL: mistake $m fails without the expected hint: $want" >&2; cat "$work/$name.$mname.txt" >&2; exit 1; }
+      nm=$((nm + 1))
+    done
+  fi
   n=$((n + 1))
 done
 [ "$n" -gt 0 ] || { echo "FAIL: no exercise folders found" >&2; exit 1; }
-echo "exercises: $n graded (each fails as shipped and passes with the reference)"
+echo "exercises: $n graded (each fails as shipped and passes with the reference); $nm mistakes each caught with its hint"
