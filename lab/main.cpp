@@ -64,7 +64,9 @@ int main(int argc, char** argv) {
 
     bool verbose = false;
     auto* list_cmd = app.add_subcommand("list", "List the presets with family and summary");
-    list_cmd->add_flag("-v,--verbose", verbose, "Also print each preset's folder");
+    list_cmd->add_flag("-v,--verbose", verbose, "Also print each preset's folder, level, course citations and exercise");
+    bool catalogue = false;
+    list_cmd->add_flag("--catalogue", catalogue, "Print the technique catalogue (docs/catalogue.md) as Markdown");
 
     RunOptions rn;
     auto* run_cmd = app.add_subcommand("run", "Live lab: a window with hot reload of every file the preset reads");
@@ -144,7 +146,7 @@ int main(int argc, char** argv) {
     if (render_cmd->parsed()) return render(ro, common);
     if (test_cmd->parsed()) return test(to, common);
     if (check_cmd->parsed()) return check(preset, set, common, spirv_dir);
-    if (list_cmd->parsed()) return list(verbose);
+    if (list_cmd->parsed()) return list(verbose, catalogue);
     if (bench_cmd->parsed()) return bench(bo, common);
     if (run_cmd->parsed()) return run(rn, common);
     if (gallery_cmd->parsed()) return gallery(gallery_dir, gallery_width, common);

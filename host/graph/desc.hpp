@@ -337,6 +337,9 @@ struct ViewDesc {
 struct PresetMeta {
     std::string title, family, summary;
     std::vector<std::string> tags;
+    std::string level;                  // "core" or "extended" (the catalogue's; "" = not said)
+    std::vector<std::string> sources;   // citations of the course documents ("000 L893-898")
+    std::string invariant;              // what the tests check, in one sentence (docs/catalogue.md)
 };
 
 // A generic value of a test case or check argument: number, string, bool or number list.

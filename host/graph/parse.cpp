@@ -2,6 +2,7 @@
 // [[pass]] [output] [[test]]; every key is checked (an unknown key is an error, not ignored: a
 // typo such as `fromat` must not silently fall back to a default).
 #include "graph/parse.hpp"
+#include "graph/course_docs.hpp"
 
 #include "graph/parse_parts.hpp"
 
@@ -34,6 +35,22 @@ Status parse_preset(const toml::table& t, const std::string& file, GraphDesc& g)
     if (auto s = r.str("family", g.meta.family); !s) return s;
     if (auto s = r.str("summary", g.meta.summary); !s) return s;
     if (auto s = r.strings("tags", g.meta.tags); !s) return s;
+    if (r.has("level"))
+        if (auto s = r.choice("level", g.meta.level, {"core", "extended"}); !s) return s;
+    if (auto s = r.strings("sources", g.meta.sources); !s) return s;
+    // Each citation names a document the project describes (docs/references.md) and lines it has.
+    if (r.has("sources")) {
+        const auto* arr = t["sources"].as_array();
+        for (size_t k = 0; k < g.meta.sources.size(); ++k) {
+            auto c = parse_citation(g.meta.sources[k]);
+            if (!c) {
+                Error e = c.error();
+                e.loc = r.loc_of(*arr->get(k));
+                return e;
+            }
+        }
+    }
+    if (auto s = r.str("invariant", g.meta.invariant); !s) return s;
     return r.finish();
 }
 
