@@ -24,13 +24,12 @@ int oit_kbuffer_base() {
 void oit_kbuffer_insert() {
     uint d = floatBitsToUint(gl_FragCoord.z);
     int base = oit_kbuffer_base();
-    // TODO-BEGIN(insert): L1592-1598: old = atomicMin(slot, d); stop at 0xffffffff or old == d; d = max(old, d)
+    // L1592-1598: old = atomicMin(slot, d); stop at 0xffffffff or old == d; d = max(old, d)
     for (int i = 0; i < params.k; ++i) {
         uint old = atomicMin(kdepth.slot[base + i], d);
         if (old == 0xffffffffu || old == d) break;
         d = max(old, d);
     }
-    // TODO-END
 }
 
 // Pass two (L1621-1640): the slot holding this fragment's depth, by binary search of the
@@ -42,7 +41,7 @@ void oit_kbuffer_insert() {
 int oit_kbuffer_find() {
     uint d = floatBitsToUint(gl_FragCoord.z);
     int base = oit_kbuffer_base();
-    // TODO-BEGIN(find): binary search for d in slot[base .. base + k - 1] (ascending)
+    // binary search for d in slot[base .. base + k - 1] (ascending)
     int lo = 0, hi = params.k - 1;
     while (lo <= hi) {
         int mid = lo + ((hi - lo) >> 1);
@@ -52,5 +51,4 @@ int oit_kbuffer_find() {
         else return mid;
     }
     return -1;
-    // TODO-END
 }

@@ -17,10 +17,9 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     float z = gl_FragCoord.z;
     if (z >= texelFetch(opaque_depth, p, 0).r) discard;
-    // TODO-BEGIN(peel): "comparison with previous layer" (L4180): keep only what lies behind it.
+    // "comparison with previous layer" (L4180): keep only what lies behind it.
     // Pitfall: `z < prev` keeps the previous layer itself, which wins the depth test again: every
     // layer would be the first one. Equal depths (coplanar fragments) peel as one layer.
     if (pl_iteration > 0 && z <= texelFetch(prev, p, 0).r) discard;
-    // TODO-END
     layer = v_color;
 }

@@ -7,7 +7,6 @@ layout(location = 0) out vec4 acc;
 uniform sampler2D layer;
 void main() {
     vec4 c = texelFetch(layer, ivec2(gl_FragCoord.xy), 0);
-    // TODO-BEGIN(under): premultiply: the blend state multiplies the whole source by (1 - acc.a)
+    // premultiply: the blend state multiplies the whole source by (1 - acc.a)
     acc = vec4(c.rgb * c.a, c.a);
-    // TODO-END
 }

@@ -19,7 +19,7 @@ void main() {
     int slot = int(gl_LocalInvocationID.x);
     int q = submitted_object(slot);           // the application's (unsorted) object list
     if (!params.sorted) { order.object[slot] = uint(q); return; }
-    // TODO-BEGIN(sort): rank = how many objects are drawn before q (farther, or as far with a
+    // rank = how many objects are drawn before q (farther, or as far with a
     // larger id); L4152 "Write sorted order into draw buffer", back to front (L4134).
     float kq = sort_key(q);
     int rank = 0;
@@ -27,6 +27,5 @@ void main() {
         float ko = sort_key(o);
         if (ko > kq || (ko == kq && o > q)) ++rank;
     }
-    // TODO-END
     order.object[rank] = uint(q);
 }

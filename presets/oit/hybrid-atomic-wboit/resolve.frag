@@ -24,7 +24,7 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec4 result = vec4(0.0);
     int base = oit_kbuffer_base();
-    // TODO-BEGIN(slots): front to back under, clearing each slot (L1799-1808)
+    // front to back under, clearing each slot (L1799-1808)
     for (int i = 0; i < params.k; ++i) {
         uint d = atomicExchange(kdepth.slot[base + i], 0xffffffffu);
         if (d == 0xffffffffu) break;
@@ -33,13 +33,11 @@ void main() {
         vec4 e = vec4(unpackHalf2x16(q.z), unpackHalf2x16(q.w));
         result += (vec4(c.rgb * c.a, c.a) + e) * (1.0 - result.a);
     }
-    // TODO-END
     vec4 acc = texelFetch(tail_accum, p, 0);
     float r = texelFetch(tail_reveal, p, 0).r;
     vec4 tail = vec4(acc.rgb / max(acc.a, 1e-5), r);
-    // TODO-BEGIN(tail): the tail's average colour with its coverage 1 - r, under what is in front
+    // the tail's average colour with its coverage 1 - r, under what is in front
     if (params.tail == TAIL_LISTING) result += (tail * (1.0 - tail.a)) * (1.0 - result.a);
     else result += vec4(tail.rgb * (1.0 - r), 1.0 - r) * (1.0 - result.a);
-    // TODO-END
     color = result;
 }

@@ -13,8 +13,7 @@ void main() {
     vec4 a = texelFetch(accum, p, 0);
     float r = texelFetch(reveal, p, 0).r;
     vec3 behind = texelFetch(opaque, p, 0).rgb;
-    // TODO-BEGIN(resolve): normalise the weighted sum (L1825-1827) and composite with coverage 1 - r
+    // normalise the weighted sum (L1825-1827) and composite with coverage 1 - r
     vec3 avg = a.rgb / max(a.a, 1e-5);
     color = vec4(mix(behind, avg, 1.0 - r), 1.0);
-    // TODO-END
 }
