@@ -6,8 +6,8 @@
 // and ending with the nearest fragment.
 vec3 oit_over(vec3 dst, vec4 src) { return mix(dst, src.rgb, src.a); }
 
-// Front-to-back "under" (depth peeling composites its layers nearest first, L4172-4182; the
-// same operator as the hybrid resolve's, 002_644d46bdce7e5305.txt L1804-1806): the accumulator
+// Front-to-back "under" (depth peeling composites its layers nearest first, L4166-4181; the
+// same operator as the hybrid resolve's, 002_644d46bdce7e5305.txt L1811-1813): the accumulator
 // holds premultiplied colour and coverage, acc += (a * rgb, a) * (1 - acc.a). The blend state
 // { one_minus_dst_alpha, one } does the same in hardware on a premultiplied (a * rgb, a) source.
 vec4 oit_under(vec4 acc, vec4 src) { return acc + vec4(src.rgb * src.a, src.a) * (1.0 - acc.a); }

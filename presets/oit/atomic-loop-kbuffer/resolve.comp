@@ -1,6 +1,6 @@
 #version 450
 // Atomic loop k-buffer, resolve ("The list is simply already sorted", 002_644d46bdce7e5305.txt
-// L1604-1605): the slots are ascending, so composite back to front, the farthest held slot first,
+// L1613): the slots are ascending, so composite back to front, the farthest held slot first,
 // over the opaque colour with the tail already blended in (oit_over, composite.glsl). An empty
 // slot (0xffffffff) ends the list.
 #include "oit/composite.glsl"

@@ -1,8 +1,8 @@
 #version 450
-// Atomic loop k-buffer, pass two (002_644d46bdce7e5305.txt L1608-1648): "Insert color based on
+// Atomic loop k-buffer, pass two (002_644d46bdce7e5305.txt L1608-1647): "Insert color based on
 // depth with binary search"; a fragment not among the k nearest is tail-blended: this pass's
 // colour target is the opaque image with the over blend, so the tail lands behind every kept
-// layer, in primitive order ("Tail blend is stable (primitive-order obeyed)", L1603): exact while
+// layer, in primitive order ("Tail blend is stable (primitive-order obeyed)", L1611): exact while
 // the depth complexity is <= k, order dependent in the tail beyond it. `tail` counts tail
 // fragments (a statistic, not an overflow: the k slots cannot overflow).
 #include "oit/kbuffer.glsl"

@@ -1,13 +1,13 @@
 #version 450
-// Hybrid atomic loop + weighted blended OIT, pass two (002_644d46bdce7e5305.txt L1719-1770,
+// Hybrid atomic loop + weighted blended OIT, pass two (002_644d46bdce7e5305.txt L1719-1782,
 // oitPassTwo): a fragment among the k nearest (binary search, oit/kbuffer.glsl) stores its colour
 // in its slot as two packed RGBA16F values (xy: the alpha-blended colour, zw: the emission colour,
-// L1692-1693, L1735-1738) and adds nothing to the tail; any other fragment goes to the weighted
+// L1688, L1740-1748) and adds nothing to the tail; any other fragment goes to the weighted
 // blended tail (oit/wboit.glsl): accum += (rgb * a, a) * w (blend one, one) and the revealage
 // *= (1 - a) (blend zero, one_minus_src_color, cleared to 1; the listing does not print the tail's
 // blend state, this is the one its resolve's `* (1 - alpha)` needs).
 // The listing's second branch (emission in the tail, faked with the rescale weight 1e-3,
-// L1766-1777) is not reproduced: the scene's emission reaches the slots only.
+// L1770-1781) is not reproduced: the scene's emission reaches the slots only.
 #include "oit/kbuffer.glsl"
 #include "oit/wboit.glsl"
 layout(early_fragment_tests) in;

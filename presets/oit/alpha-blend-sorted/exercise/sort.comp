@@ -2,9 +2,9 @@
 // EXERCISE — this file shadows the preset's sort.comp for oit/alpha-blend-sorted only.
 //     passlab run   presets/oit/alpha-blend-sorted --exercise presets/oit/alpha-blend-sorted/exercise
 //     passlab grade presets/oit/alpha-blend-sorted --exercise presets/oit/alpha-blend-sorted/exercise
-// Explicit depth sorting (000_c9f7e5de708ecbb3.txt L4150-4160): "Write sorted order into draw
+// Explicit depth sorting (000_c9f7e5de708ecbb3.txt L4150-4159): "Write sorted order into draw
 // buffer" and draw the objects back to front with the over blend ("Blending must be back to front",
-// L4134; glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), L2132). One thread per object slot
+// L4135; glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), L2132). One thread per object slot
 // computes its object's rank: the number of objects farther away (larger centre depth; equal
 // depths: larger object id first, so the order depends on the objects alone, never on the order the
 // application listed them in). Then order[rank] = object: slot 0 of the draw is the farthest.
@@ -23,7 +23,7 @@ void main() {
     int q = submitted_object(slot);           // the application's (unsorted) object list
     if (!params.sorted) { order.object[slot] = uint(q); return; }
     // TODO (sort): rank = how many objects are drawn before q (farther, or as far with a
-    // larger id); L4152 "Write sorted order into draw buffer", back to front (L4134).
+    // larger id); L4142 "Write sorted order into draw buffer", back to front (L4135).
     int rank = slot;   // as shipped: the list's order, unsorted
     order.object[rank] = uint(q);
 }

@@ -18,7 +18,7 @@ void main() {
     vec4 c = v_color;
     if (params.mono) c.rgb = params.mono_rgb;   // equal colours: the case WBOIT gets exactly right
     float w = oit_wboit_weight(c, gl_FragCoord.z * params.depth_range);
-    // TODO (accumulate): L1763 "vec4(rgb * a, a) * weight"; the revealage factor is a
+    // TODO (accumulate): L1766 "vec4(rgb * a, a) * weight"; the revealage factor is a
     accum  = vec4(0.0);
     reveal = vec4(0.0);
 }

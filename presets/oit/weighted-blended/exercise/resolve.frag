@@ -2,7 +2,7 @@
 // EXERCISE — this file shadows the preset's resolve.frag for oit/weighted-blended only.
 //     passlab run   presets/oit/weighted-blended --exercise presets/oit/weighted-blended/exercise
 //     passlab grade presets/oit/weighted-blended --exercise presets/oit/weighted-blended/exercise
-// Weighted blended OIT, resolve (002_644d46bdce7e5305.txt L1825-1827: "rgb / max(a, 1e-5)"):
+// Weighted blended OIT, resolve (002_644d46bdce7e5305.txt L1826-1828: "rgb / max(a, 1e-5)"):
 // the weighted average colour, shown with coverage 1 - revealage over the opaque colour:
 //   c = accum.rgb / max(accum.a, 1e-5) * (1 - reveal) + opaque * reveal
 layout(location = 0) in vec2 uv;
@@ -16,6 +16,6 @@ void main() {
     vec4 a = texelFetch(accum, p, 0);
     float r = texelFetch(reveal, p, 0).r;
     vec3 behind = texelFetch(opaque, p, 0).rgb;
-    // TODO (resolve): normalise the weighted sum (L1825-1827) and composite with coverage 1 - r
+    // TODO (resolve): normalise the weighted sum (L1826-1828) and composite with coverage 1 - r
     color = vec4(behind, 1.0);
 }

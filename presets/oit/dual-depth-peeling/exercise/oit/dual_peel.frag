@@ -24,6 +24,6 @@ void main() {
     float z = gl_FragCoord.z, nz = 1.0 - z;
     minmax = vec4(0.0); front = vec4(0.0); back = vec4(0.0);
     vec4 pm = vec4(v_color.rgb * v_color.a, v_color.a);
-    // TODO (dual): L4195-4197 "If < min write to front layer, if > max write to back layer"
+    // TODO (dual): L4194-4195 "If < min write to front layer, if > max write to back layer"
     // (min and max of what is left: the outermost remaining fragments are the two layers).
 }

@@ -24,7 +24,7 @@ void main() {
     float z = gl_FragCoord.z, nz = 1.0 - z;
     minmax = vec4(0.0); front = vec4(0.0); back = vec4(0.0);
     vec4 pm = vec4(v_color.rgb * v_color.a, v_color.a);
-    // L4195-4197 "If < min write to front layer, if > max write to back layer"
+    // L4194-4195 "If < min write to front layer, if > max write to back layer"
     // (min and max of what is left: the outermost remaining fragments are the two layers).
     if (nz > mm.x || z > mm.y) return;                   // peeled already
     if (nz == mm.x) front = pm;                          // the nearest remaining fragment
