@@ -1,5 +1,5 @@
 #version 450
-// MISTAKE (no-normalisation) — this file shadows the preset's resolve.frag for oit/weighted-blended only.
+// MISTAKE (no-normalisation) — this file shadows the shared oit/wboit_resolve.frag for oit/weighted-blended only.
 //     passlab run   presets/oit/weighted-blended --exercise presets/oit/weighted-blended/exercise
 //     passlab grade presets/oit/weighted-blended --exercise presets/oit/weighted-blended/exercise
 // Weighted blended OIT, resolve (002_644d46bdce7e5305.txt L1826-1828: "rgb / max(a, 1e-5)"):

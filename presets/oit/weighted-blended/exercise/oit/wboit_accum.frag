@@ -1,8 +1,9 @@
 #version 450
-// EXERCISE — this file shadows the preset's accum.frag for oit/weighted-blended only.
+// EXERCISE — this file shadows the shared oit/wboit_accum.frag for oit/weighted-blended only.
 //     passlab run   presets/oit/weighted-blended --exercise presets/oit/weighted-blended/exercise
 //     passlab grade presets/oit/weighted-blended --exercise presets/oit/weighted-blended/exercise
-// Weighted blended OIT, accumulation (002_644d46bdce7e5305.txt L1757-1765; oit/wboit.glsl):
+// Weighted blended OIT, accumulation (002_644d46bdce7e5305.txt L1760-1768; oit/wboit.glsl), the
+// accumulate pass of weighted-blended and of colored-blended's test-only check:
 // one geometry pass in any order, two targets with order-independent blends:
 //   accum  += (rgb * a, a) * w          blend one, one (additive)
 //   reveal *= (1 - a)                   blend zero, one_minus_src_color (multiplicative), cleared to 1
