@@ -8,25 +8,30 @@
 # 640x360 with the row's params (test-only images, `reference` and `dp_*`, not counted).
 # Writes the table between the markers in presets/oit/README.md (or prints it with --print).
 #
-# Usage: tests/bench/oit_compare.sh [PASSLAB] [--print] [--frames N]
+# Every method runs at the same opacity, --alpha (default 0.25: at 0.5 the layers behind the
+# fourth show through only 1/16 and every bounded method looks exact).
+# Usage: tests/bench/oit_compare.sh [PASSLAB] [--print] [--frames N] [--alpha A]
 #   PASSLAB defaults to build/default/lab/passlab; run from the repository root. Takes ~15 min
 #   on lavapipe (2 cores): depth peeling at 32 layers is 32 geometry passes of 32 full-screen quads.
 set -eu
 passlab=build/default/lab/passlab
 args=""
-for a in "$@"; do case $a in --*|[0-9]*) args="$args $a";; *) passlab=$a;; esac; done
+for a in "$@"; do case $a in --*|[0-9]*|.[0-9]*) args="$args $a";; *) passlab=$a;; esac; done
 exec python3 - "$passlab" $args <<'PY'
 import json, math, os, re, struct, subprocess, sys, tempfile, tomllib, zlib
 
 passlab = sys.argv[1]
 printonly = '--print' in sys.argv
 frames = int(sys.argv[sys.argv.index('--frames') + 1]) if '--frames' in sys.argv else 5
+alpha = sys.argv[sys.argv.index('--alpha') + 1] if '--alpha' in sys.argv else '0.25'
 W, H = 640, 360
 work = tempfile.mkdtemp(prefix='oit-compare-')
 
 # (label, settings) -> params; the reference row is per-pixel-linked-lists with room for every fragment.
 SETTINGS = [('heavy', {'heavy': 'true'}, 3), ('2', {'stack': '2'}, 2), ('8', {'stack': '8'}, 8), ('32', {'stack': '32'}, 32)]
 def method_params(name, depth):
+    return {'alpha': alpha, **own_params(name, depth)}
+def own_params(name, depth):
     if name == 'per-pixel-linked-lists': return {'capacity': str(max(depth, 4)), 'max_frags': '32'}
     if name in ('depth-peeling', 'dual-depth-peeling'): return {'layers': str(max(depth, 3))}   # exact: n >= depth
     if name in ('atomic-loop-kbuffer', 'hybrid-atomic-wboit'): return {'k': '4'}               # bounded memory
@@ -120,9 +125,9 @@ lines = ['| method | ' + ' | '.join(f'heavy (102k tris, depth 3)' if l == 'heavy
          '| --- |' + ' --- |' * len(SETTINGS)]
 for name in METHODS:
     lines.append(f'| `{name}` | ' + ' | '.join(cell(rows[(name, l)]) for l, _, _ in SETTINGS) + ' |')
-params = [f'`{n}`: ' + (' '.join(f'{k}={v}' for k, v in method_params(n, d).items()) or 'defaults') + f' at depth {l}'
-          for n in METHODS for l, _, d in SETTINGS if method_params(n, d)]
-table = '\n'.join(lines) + '\n\nCells: RMSE / max abs error against per-pixel-linked-lists (RGB, 8-bit PNGs: 1/255 = 0.0039 is the floor) / frame median (`passlab bench`, ' + str(frames) + ' frames) / memory of the method\'s images and buffers. Params: ' + '; '.join(params) + '.\n'
+params = [f'`{n}` ' + ', '.join(f'{l}: ' + ' '.join(f'{k}={v}' for k, v in own_params(n, d).items()) for l, _, d in SETTINGS)
+          for n in METHODS if any(own_params(n, d) for _, _, d in SETTINGS)]
+table = '\n'.join(lines) + '\n\nCells: RMSE / max abs error against per-pixel-linked-lists (RGB, 8-bit PNGs: 1/255 = 0.0039 is the floor) / frame median (`passlab bench`, ' + str(frames) + ' frames) / memory of the method\'s images and buffers. Every method at alpha = ' + alpha + '; other params: ' + '; '.join(params) + '.\n'
 if printonly: print(table); sys.exit(0)
 readme = 'presets/oit/README.md'
 s = open(readme).read()

@@ -24,6 +24,8 @@ void main() {
     if (!params.sorted) { order.object[slot] = uint(q); return; }
     // TODO (sort): rank = how many objects are drawn before q (farther, or as far with a
     // larger id); L4142 "Write sorted order into draw buffer", back to front (L4135).
+    //   rank(q) = #{ o in 0..OIT_INSTANCES-1 : sort_key(o) > sort_key(q) or (equal keys and o > q) }
+    // so the farthest object gets rank 0 and is drawn first. Ties by object id, never by slot.
     int rank = slot;   // as shipped: the list's order, unsorted
     order.object[rank] = uint(q);
 }

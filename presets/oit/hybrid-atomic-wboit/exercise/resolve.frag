@@ -28,9 +28,14 @@ void main() {
     vec4 result = vec4(0.0);
     int base = oit_kbuffer_base();
     // TODO (slots): front to back under, clearing each slot (L1800-1814)
+    //   for i in 0..k-1: d = atomicExchange(kdepth.slot[base + i], 0xffffffffu); stop when d is 0xffffffff;
+    //   q = kcolor.packed[base + i]: colour = (unpackHalf2x16(q.x), unpackHalf2x16(q.y)), emission from q.zw;
+    //   result += ((rgb * a, a) + emission) * (1 - result.a)
     vec4 acc = texelFetch(tail_accum, p, 0);
     float r = texelFetch(tail_reveal, p, 0).r;
     vec4 tail = vec4(acc.rgb / max(acc.a, 1e-5), r);
     // TODO (tail): the tail's average colour with its coverage 1 - r, under what is in front
+    //   result += (tail.rgb * (1 - r), 1 - r) * (1 - result.a). Compare the listing's vec4 form
+    //   (L1834) with this one: which alpha does each leave for the final blend?
     color = result;
 }

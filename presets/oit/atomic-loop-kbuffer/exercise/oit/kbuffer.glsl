@@ -28,6 +28,7 @@ void oit_kbuffer_insert() {
     uint d = floatBitsToUint(gl_FragCoord.z);
     int base = oit_kbuffer_base();
     // TODO (insert): L1596-1602: old = atomicMin(slot, d); stop at 0xffffffff or old == d; d = max(old, d)
+    //   for i in 0..k-1 over kdepth.slot[base + i]: the smaller depth stays, the larger travels on.
 }
 
 // Pass two (L1627-1647): the slot holding this fragment's depth, by binary search of the
@@ -40,5 +41,8 @@ int oit_kbuffer_find() {
     uint d = floatBitsToUint(gl_FragCoord.z);
     int base = oit_kbuffer_base();
     // TODO (find): binary search for d in slot[base .. base + k - 1] (ascending)
+    //   lo = 0, hi = k - 1; look at mid = lo + (hi - lo) / 2: d greater -> lo = mid + 1, smaller ->
+    //   hi = mid - 1, equal -> return mid; when the range is empty return -1. Every element of the
+    //   range must be looked at (see the comment above on the listing's loop).
     return -1;
 }

@@ -23,5 +23,7 @@ void main() {
     // TODO (peel): "comparison with previous layer" (L4180): keep only what lies behind it.
     // Pitfall: `z < prev` keeps the previous layer itself, which wins the depth test again: every
     // layer would be the first one. Equal depths (coplanar fragments) peel as one layer.
+    // Layer 0 (pl_iteration == 0) keeps every fragment; a later layer discards the fragments at or
+    // in front of the previous layer's depth, texelFetch(prev, p, 0).r.
     layer = v_color;
 }

@@ -11,5 +11,6 @@ uniform sampler2D layer;
 void main() {
     vec4 c = texelFetch(layer, ivec2(gl_FragCoord.xy), 0);
     // TODO (under): premultiply: the blend state multiplies the whole source by (1 - acc.a)
+    //   acc = (rgb * a, a)    (the blend adds it times 1 - acc.a: oit_under of composite.glsl)
     acc = vec4(0.0);
 }

@@ -26,4 +26,8 @@ void main() {
     vec4 pm = vec4(v_color.rgb * v_color.a, v_color.a);
     // TODO (dual): L4194-4195 "If < min write to front layer, if > max write to back layer"
     // (min and max of what is left: the outermost remaining fragments are the two layers).
+    // mm = (1 - near, far) of what is left; compare nz = 1 - z with mm.x, z with mm.y:
+    //   outside [near, far]: peeled by an earlier pass, write nothing;
+    //   at near: front = pm; otherwise at far: back = pm (exactly one of them when near == far);
+    //   strictly inside: minmax = (nz, z, 0, 0), the range of the next pass.
 }

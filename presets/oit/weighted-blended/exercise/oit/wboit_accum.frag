@@ -20,6 +20,8 @@ void main() {
     if (params.mono) c.rgb = params.mono_rgb;   // equal colours: the case WBOIT gets exactly right
     float w = oit_wboit_weight(c, gl_FragCoord.z * params.depth_range);
     // TODO (accumulate): L1766 "vec4(rgb * a, a) * weight"; the revealage factor is a
+    //   accum = (rgb * a, a) * w      (target 0, blend one, one)
+    //   reveal = a                    (target 1, blend zero, one_minus_src_color: reveal *= 1 - a)
     accum  = vec4(0.0);
     reveal = vec4(0.0);
 }

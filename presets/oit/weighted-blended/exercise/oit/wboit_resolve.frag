@@ -17,5 +17,6 @@ void main() {
     float r = texelFetch(reveal, p, 0).r;
     vec3 behind = texelFetch(opaque, p, 0).rgb;
     // TODO (resolve): normalise the weighted sum (L1826-1828) and composite with coverage 1 - r
+    //   avg = a.rgb / max(a.a, 1e-5);   color = avg * (1 - r) + behind * r
     color = vec4(behind, 1.0);
 }
