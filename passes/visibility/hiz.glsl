@@ -3,8 +3,7 @@
 // is further than recorded pixel, early exit". Here the "polygon" is an object's bounding box:
 // its nearest depth against the pyramid's farthest depth over the box's screen rectangle, at the
 // level where that rectangle spans at most 2x2 texels, so the test is four fetches.
-// Depth is Vulkan's 0 (near) .. 1 (far), depth test `less`. The pyramid's sampler must be
-// nearest/nearest (filter and mip_filter).
+// Depth is Vulkan's 0 (near) .. 1 (far), depth test `less`.
 #ifndef PASSLAB_HIZ_GLSL
 #define PASSLAB_HIZ_GLSL
 
@@ -44,20 +43,22 @@ int pl_hiz_level(PlScreenRect r, int levels, int refine) {
     return clamp(k, 0, levels - 1);
 }
 
+// Level k's size by Vulkan's rule, max(size_0 >> k, 1), instead of textureSize(hiz, k): on
+// lavapipe (Mesa 22.3.6) textureSize with a lod that differs between invocations returned the
+// wrong level's size (20x11 for level 4 of 640x360), which clamped rectangles onto the wrong
+// texels and culled 3 visible boxes (texturing/mipmapping/means.frag met the same in a
+// fragment shader).
+ivec2 pl_level_size(sampler2D s, int k) { return max(textureSize(s, 0) >> k, ivec2(1)); }
+
 // The farthest depth the pyramid holds over the rectangle at level k. Level-0 pixel t lies under
 // level-k texel min(t >> k, size_k - 1): floor halving gives the last texel of an odd side the
 // dropped row/column too (post/max_reduce.frag), so the same clamp is used here.
 float pl_hiz_max(sampler2D hiz, PlScreenRect r, int k) {
-    ivec2 s = textureSize(hiz, k);
+    ivec2 s = pl_level_size(hiz, k);
     ivec2 a = min(r.lo >> k, s - 1), b = min(r.hi >> k, s - 1);
     float m = 0.0;
     for (int y = a.y; y <= b.y; ++y)
-        for (int x = a.x; x <= b.x; ++x)
-            // textureLod at the texel centre through a nearest/nearest sampler. With texelFetch(hiz,
-            // c, k) here the preset culled 3 visible boxes at level 5 on lavapipe (Mesa 22.3.6),
-            // although a pass reading the chain both ways agreed with the per-level oracle: not
-            // understood yet (presets/visibility/hierarchical-z/README.md, Known gaps).
-            m = max(m, textureLod(hiz, (vec2(x, y) + 0.5) / vec2(s), float(k)).r);
+        for (int x = a.x; x <= b.x; ++x) m = max(m, texelFetch(hiz, ivec2(x, y), k).r);
     return m;
 }
 

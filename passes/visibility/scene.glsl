@@ -7,7 +7,8 @@
 
 #define PL_VIS_COLS 12
 #define PL_VIS_ROWS 5
-#define PL_VIS_OBJECTS (PL_VIS_COLS * PL_VIS_ROWS)
+#define PL_VIS_GRID (PL_VIS_COLS * PL_VIS_ROWS)
+#define PL_VIS_OBJECTS (PL_VIS_GRID + 1)   // the grid and one box that pierces the wall
 
 struct PlBox { vec3 centre; vec3 half_size; };
 
@@ -18,6 +19,10 @@ PlBox pl_vis_wall() { return PlBox(vec3(0.0, 0.6, 0.0), vec3(1.6, 1.0, 0.1)); }
 // Grid boxes: 12 columns 0.7 apart, 5 rows from z = -1 to -5, heights from a fixed pattern
 // (none reaches over the wall's top as seen from the default camera).
 PlBox pl_vis_object(int i) {
+    // The last box pierces the wall (z from -0.4 to 0.6; the wall's front face is at z = 0.1):
+    // its far corners are behind the wall, its near ones in front, so only a test with its
+    // NEAREST depth keeps it.
+    if (i == PL_VIS_GRID) return PlBox(vec3(0.6, 0.35, 0.1), vec3(0.25, 0.35, 0.5));
     int c = i % PL_VIS_COLS, r = i / PL_VIS_COLS;
     float h = 0.18 + 0.07 * float((c * 7 + r * 3) % 5);
     return PlBox(vec3((float(c) - 5.5) * 0.7, h, -1.0 - float(r)), vec3(0.2, h, 0.2));

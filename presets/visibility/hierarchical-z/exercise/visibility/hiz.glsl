@@ -3,8 +3,7 @@
 // is further than recorded pixel, early exit". Here the "polygon" is an object's bounding box:
 // its nearest depth against the pyramid's farthest depth over the box's screen rectangle, at the
 // level where that rectangle spans at most 2x2 texels, so the test is four fetches.
-// Depth is Vulkan's 0 (near) .. 1 (far), depth test `less`. The pyramid's sampler must be
-// nearest/nearest (filter and mip_filter).
+// Depth is Vulkan's 0 (near) .. 1 (far), depth test `less`.
 #ifndef PASSLAB_HIZ_GLSL
 #define PASSLAB_HIZ_GLSL
 
@@ -44,14 +43,21 @@ int pl_hiz_level(PlScreenRect r, int levels, int refine) {
     return clamp(k, 0, levels - 1);
 }
 
+// Level k's size by Vulkan's rule, max(size_0 >> k, 1), instead of textureSize(hiz, k): on
+// lavapipe (Mesa 22.3.6) textureSize with a lod that differs between invocations returned the
+// wrong level's size (20x11 for level 4 of 640x360), which clamped rectangles onto the wrong
+// texels and culled 3 visible boxes (texturing/mipmapping/means.frag met the same in a
+// fragment shader).
+ivec2 pl_level_size(sampler2D s, int k) { return max(textureSize(s, 0) >> k, ivec2(1)); }
+
 // The farthest depth the pyramid holds over the rectangle at level k. Level-0 pixel t lies under
 // level-k texel min(t >> k, size_k - 1): floor halving gives the last texel of an odd side the
 // dropped row/column too (post/max_reduce.frag), so the same clamp is used here.
 float pl_hiz_max(sampler2D hiz, PlScreenRect r, int k) {
     // TODO (000_c9f7e5de708ecbb3.txt L6292-6301: "a pixel represents max. z-value of group of
     // pixels on lower level"): the farthest depth over EVERY level-k texel under the rectangle
-    // r.lo .. r.hi. Level-0 pixel t lies under texel min(t >> k, textureSize(hiz, k) - 1); read
-    // each with textureLod at its centre ((c + 0.5) / size, lod k) and return the maximum.
+    // r.lo .. r.hi. Level-0 pixel t lies under texel min(t >> k, pl_level_size(hiz, k) - 1);
+    // read each with texelFetch(hiz, c, k) and return the maximum.
     return 1.0;   // nothing is ever occluded
 }
 
