@@ -13,7 +13,8 @@ void main() {
     if (params.mode == MODE_STATELESS) {
         // Steps done after this frame: substeps per frame from the first frame on. The birth step
         // b of instance j: the `life` newest steps hold rate particles each; b < 0 is not born yet.
-        int s = (frame.index + 1) * params.substeps - 1;     // the last step's index
+        // (prewarm: `life` steps before the first frame, as the state-full reset places them).
+        int s = (params.prewarm ? params.life : 0) + (frame.index + 1) * params.substeps - 1;   // the last step's index
         int b = s - params.life + 1 + gl_InstanceIndex / params.rate;
         uint e = uint(max(b, 0) * params.rate + gl_InstanceIndex % params.rate);
         vec3 x0, v0;
