@@ -14,15 +14,7 @@ layout(triangle_strip, max_vertices = 12) out;
 layout(location = 0) in vec3 v_world[];
 layout(std430) buffer edges { uint emitted; };
 
-// Ortho projections have proj[3][3] = 1: every view ray is parallel.
-vec3 to_eye(vec3 p) {
-    return frame.proj[3][3] == 1.0 ? (frame.inv_view * vec4(0.0, 0.0, 1.0, 0.0)).xyz : frame.camera_pos.xyz - p;
-}
-
-bool faces_eye(vec3 a, vec3 b, vec3 c, float tol) {
-    vec3 n = cross(b - a, c - a), v = to_eye(a);
-    return dot(n, v) > tol * length(n) * length(v);
-}
+#include "npr/silhouette.glsl"   // to_eye, faces_eye
 
 // The line is a quad params.width pixels wide laid on the outer side of the edge (away from the
 // triangle's third corner c): centred on the edge, its inner half would lie over the surface

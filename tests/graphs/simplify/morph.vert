@@ -3,7 +3,7 @@
 // LOD it collapses into; at factor 1 the collapsed faces have no area left and the rest are the
 // coarse LOD's faces. The lerp is written as a(1-f) + b f, not mix(), whose a + (b-a) f form is
 // not exactly b at f = 1.
-#include "lod.glsl"
+#include "visibility/lod_emit.glsl"
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec2 uv;
