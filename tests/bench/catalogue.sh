@@ -1,12 +1,15 @@
 #!/bin/sh
 # Per-preset frame time and per-pass GPU time at one size, as a Markdown table (for issue notes
-# and READMEs). Benchmarks are not tests: nothing here fails on a time.
+# and READMEs), then a summary: presets within 33 ms and 16.7 ms per frame, the slowest five.
+# Benchmarks are not tests: nothing here fails on a time.
 # Usage: catalogue.sh PASSLAB [SIZE] [FRAMES] [PRESET_DIR ...]
 #   catalogue.sh build/default/lab/passlab 640x360 10 presets/shading presets/post
 set -eu
 passlab=$1 size=${2:-640x360} frames=${3:-10}
 shift $(( $# < 3 ? $# : 3 ))
 [ $# -gt 0 ] || set -- presets
+rows=$(mktemp); trap 'rm -f "$rows"' EXIT
+load_before=$(cut -d' ' -f1 /proc/loadavg 2>/dev/null || echo "?")
 echo "| preset | frame median ms | per-pass GPU median ms |"
 echo "| --- | --- | --- |"
 for root in "$@"; do
@@ -20,4 +23,20 @@ for root in "$@"; do
       /^json/ { inpass = 0 }
       END { printf "| %s | %s | %s |\n", name, med, p }'
   done
-done
+done | tee "$rows"
+# The summary (issue #21's targets): how many presets meet 33 ms (30 fps) and 16.7 ms (60 fps)
+# per frame, and the slowest five. The load average says how much else the machine was running:
+# on a shared 2-core machine medians move by 20% or more between runs.
+load_after=$(cut -d' ' -f1 /proc/loadavg 2>/dev/null || echo "?")
+awk -F'|' -v size="$size" -v lb="$load_before" -v la="$load_after" '
+  { name = $2; ms = $3; gsub(/ /, "", name); gsub(/ /, "", ms) }
+  ms == "failed" { ++failed; next }
+  ms ~ /^[0-9.]+$/ { ++n; if (ms + 0 <= 33.0) ++ok30; if (ms + 0 <= 16.7) ++ok60; print ms, name > "/dev/stderr" }
+  END {
+    printf "\nsummary at %s: %d presets measured, %d <= 33 ms, %d <= 16.7 ms", size, n, ok30, ok60
+    if (failed) printf ", %d failed to run", failed
+    printf " (load average %s before, %s after)\n", lb, la
+  }' "$rows" 2> "$rows.ms"
+echo "slowest five:"
+sort -rn "$rows.ms" | head -5 | awk '{ printf "  %s %s ms\n", $2, $1 }'
+rm -f "$rows.ms"
