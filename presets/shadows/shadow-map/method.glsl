@@ -2,7 +2,7 @@
 // Seeds: 000_c9f7e5de708ecbb3.txt L4575-4585 (the two steps and the compare), L4685-4700 (acne,
 // Peter Panning, slope-scale bias); 003_cfc3b5b225ddab3d.txt L252-260 (Williams 78).
 #include "shadows/shadow_map.glsl"
-uniform sampler2D shadow;   // the light's depth map (pass `light_depth`)
+uniform sampler2D shadow;   // the light's depth map (passes light_*)
 
 float shadow_visibility(vec3 p, vec3 n, vec3 l) {
     float texel = shadow_texel_world(cameras.light, p, float(textureSize(shadow, 0).y));
