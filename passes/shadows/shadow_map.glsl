@@ -64,10 +64,24 @@ float shadow_nearest(sampler2D map, vec3 coord) {
 // the fraction in shadow"). The block is the n x n texels whose centres are nearest the point
 // (n = 2: the bilinear footprint; n = 4: the 16 lookups of 003 L321), so the result is a
 // multiple of 1/n^2.
+// For even n the depths come four at a time from textureGather (the 2x2 texels around a texel
+// corner, whatever the sampler's filter), the compares still one per texel: the same result
+// as n^2 fetches for a quarter of the fetches (texels past the map's edge repeat the edge
+// there, per the sampler's clamp, instead of counting as lit).
 float shadow_pcf_grid(sampler2D map, vec3 coord, int n) {
-    vec2 s = coord.xy * vec2(textureSize(map, 0));
+    vec2 size = vec2(textureSize(map, 0));
+    vec2 s = coord.xy * size;
     ivec2 first = ivec2(floor(s - 0.5 * float(n - 1)));
     float lit = 0.0;
+    if (coord.z > 1.0) return 1.0;
+    if (n % 2 == 0) {
+        for (int j = 0; j < n; j += 2)
+            for (int i = 0; i < n; i += 2) {
+                vec4 d = textureGather(map, (vec2(first + ivec2(i, j)) + 1.0) / size, 0);
+                lit += dot(vec4(lessThanEqual(vec4(coord.z), d)), vec4(1.0));
+            }
+        return lit / float(n * n);
+    }
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) lit += shadow_compare_texel(map, first + ivec2(i, j), coord.z);
     return lit / float(n * n);
