@@ -5,7 +5,9 @@
 // Targets (in this order): 0 colour; 1 `vis`, the visibility debug target the tests read:
 //     r = visibility (1 lit, 0 shadowed; 1 on the background), g = 1 on the ground (receiver),
 //     b = 1 on a caster, a = 1 where there is geometry;
-// 2 `world`: xyz = world position, w = object + 1 (0 = background), for reference passes.
+// 2 `world`: xyz = world position, w = object + 1 (0 = background), for reference passes;
+// 3, only when the pass defines SHADOW_DEBUG_OUT: the method's own debug vec4, shadow_debug()
+// (declared by method.glsl; called after shadow_visibility).
 #include "shadows/scene.glsl"
 #include "shadows/light.glsl"
 #include "method.glsl"
@@ -19,6 +21,9 @@ layout(location = 1) in vec3 v_normal;
 layout(location = 0) out vec4 color;
 layout(location = 1) out vec4 vis;
 layout(location = 2) out vec4 world;
+#ifdef SHADOW_DEBUG_OUT
+layout(location = 3) out vec4 debug;
+#endif
 void main() {
     vec3 n = normalize(v_normal);
     vec3 l = shadow_light_dir(v_world);
@@ -30,4 +35,7 @@ void main() {
     bool ground = OBJECT == SHADOW_GROUND;
     vis = vec4(v, ground ? 1.0 : 0.0, ground ? 0.0 : 1.0, 1.0);
     world = vec4(v_world, float(OBJECT + 1));
+#ifdef SHADOW_DEBUG_OUT
+    debug = shadow_debug();
+#endif
 }
