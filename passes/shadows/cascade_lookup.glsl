@@ -26,6 +26,8 @@ float shadow_cascade_visibility(int i, vec3 p, vec3 n, vec3 l) {
 float shadow_visibility(vec3 p, vec3 n, vec3 l) {
     float d = -(frame.view * vec4(p, 1.0)).z;   // view distance along the view axis
     int count = params.cascades, i = 0;
+    // Beyond the last split there is no cascade: lit (the "shadow distance" of engines).
+    if (d > cascades_in.c[count - 1].range.y) return 1.0;
     while (i < count - 1 && d > cascades_in.c[i].range.y) ++i;
     shadow_cascade_used = i;
     float v = shadow_cascade_visibility(i, p, n, l);
@@ -43,3 +45,13 @@ float shadow_visibility(vec3 p, vec3 n, vec3 l) {
 // Debug target `cascade_info`: (cascade used, 1 if the point lies inside every cascade box it
 // was looked up in, blend weight into the next cascade, |v_i - v_{i+1}| in the band).
 vec4 shadow_debug() { return vec4(float(shadow_cascade_used), shadow_cascade_inside, shadow_cascade_blend, shadow_cascade_diff); }
+
+// Debug tint (shade.frag's SHADOW_TINT hook), when params.show_cascades: cascade 0 red, 1 green,
+// 2 blue, 3 yellow, the blend bands mixing the two by their weight; no cascade: untinted.
+vec3 shadow_tint_of(int i) {
+    return i == 0 ? vec3(1.0, 0.55, 0.55) : i == 1 ? vec3(0.55, 1.0, 0.55) : i == 2 ? vec3(0.55, 0.65, 1.0) : i == 3 ? vec3(1.0, 1.0, 0.5) : vec3(1.0);
+}
+vec3 shadow_tint() {
+    if (!params.show_cascades || shadow_cascade_used < 0) return vec3(1.0);
+    return mix(shadow_tint_of(shadow_cascade_used), shadow_tint_of(shadow_cascade_used + 1), shadow_cascade_blend);
+}

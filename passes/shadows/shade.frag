@@ -7,7 +7,8 @@
 //     b = 1 on a caster, a = 1 where there is geometry;
 // 2 `world`: xyz = world position, w = object + 1 (0 = background), for reference passes;
 // 3, only when the pass defines SHADOW_DEBUG_OUT: the method's own debug vec4, shadow_debug()
-// (declared by method.glsl; called after shadow_visibility).
+// (declared by method.glsl; called after shadow_visibility). With SHADOW_TINT defined the
+// colour is multiplied by the method's shadow_tint() (a debug view, e.g. cascades coloured).
 #include "shadows/scene.glsl"
 #include "shadows/light.glsl"
 #include "method.glsl"
@@ -32,6 +33,9 @@ void main() {
     float v = n_dot_l > 0.0 ? shadow_visibility(v_world, n, l) : 0.0;
     vec3 albedo = shadow_albedo(OBJECT);
     color = vec4(albedo * (SHADOW_AMBIENT + (1.0 - SHADOW_AMBIENT) * v * max(n_dot_l, 0.0)), 1.0);
+#ifdef SHADOW_TINT
+    color.rgb *= shadow_tint();
+#endif
     bool ground = OBJECT == SHADOW_GROUND;
     vis = vec4(v, ground ? 1.0 : 0.0, ground ? 0.0 : 1.0, 1.0);
     world = vec4(v_world, float(OBJECT + 1));
