@@ -9,6 +9,13 @@
 layout(local_size_x = 4) in;
 #include "shadows/cascades.glsl"
 layout(std430) writeonly buffer Cascades { ShadowCascade c[SHADOW_MAX_CASCADES]; } cascades_out;
+#ifdef CASCADES_FROM_DEPTH
+// SDSM (002_644d46bdce7e5305.txt L1891-1893): the partitioned range is the depth buffer's tight
+// [zmin, zmax], reduced by sdsm_reduce.comp into `zbits` (~bits of the min, bits of the max).
+// `splits` records (zmin, zmax, z_0 .. z_N) for the tests.
+layout(std430) readonly buffer ZBits { uint w[2]; } zbits;
+layout(std430) writeonly buffer Splits { float z[3 + SHADOW_MAX_CASCADES]; } splits;
+#endif
 
 vec3 view_corner(float x, float y, float dist) {
     // The view-space point at distance `dist` along -Z through ndc (x, y), to world.
@@ -21,6 +28,18 @@ void main() {
     int i = int(gl_GlobalInvocationID.x), n = CASCADES_N;
     if (i >= n) return;
     float zmin = CASCADES_ZMIN, zmax = CASCADES_ZMAX;
+#ifdef CASCADES_FROM_DEPTH
+    // CASCADES_FROM_DEPTH: an expression (params.from_depth): 0 keeps the fixed range, as CSM.
+    if (bool(CASCADES_FROM_DEPTH) && zbits.w[1] != 0u) {   // geometry seen; else the fixed range
+        zmin = uintBitsToFloat(~zbits.w[0]);
+        zmax = max(uintBitsToFloat(zbits.w[1]), zmin * 1.0001);   // a flat view: keep zmax > zmin
+    }
+    if (i == 0) {
+        splits.z[0] = zmin;
+        splits.z[1] = zmax;
+        for (int k = 0; k <= n; ++k) splits.z[2 + k] = shadow_split(k, n, zmin, zmax, CASCADES_LAMBDA);
+    }
+#endif
     float z0 = shadow_split(i, n, zmin, zmax, CASCADES_LAMBDA);
     float z1 = shadow_split(i + 1, n, zmin, zmax, CASCADES_LAMBDA);
     float w = i + 1 < n ? CASCADES_BLEND * (z1 - z0) : 0.0;
