@@ -94,7 +94,7 @@ def storage(toml):
         b = wh[0] * wh[1] * layers * DEPTH_BYTES[fmt]
         total += b
         parts.append(f"{name} {wh[0]}²{'x' + str(layers) if layers > 1 else ''} {fmt}")
-    return (f"{total / 2**20:.1f} MiB ({', '.join(parts)})" if parts else "no map")
+    return (f"{total / 2**20:.1f} MiB ({', '.join(parts)})" if parts else "no depth map")
 
 rows, details = [], []
 load = open("/proc/loadavg").read().split()[0] if os.path.exists("/proc/loadavg") else "?"
