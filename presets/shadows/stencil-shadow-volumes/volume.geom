@@ -30,12 +30,8 @@ layout(location = 0) in vec3 v_world[];
 #define SV_CAPS 1   // z-pass needs no caps (000 L4829-4835); z-fail does (L4808-4809)
 #endif
 
-// The shared scene's light is the camera `light` (shadows/light.glsl): an ortho camera is a
-// directional light towards its eye (its view's +Z), a perspective one a point light at its eye.
-vec4 light_h() {
-    if (cameras.light.clip.w == 1.0) return vec4(normalize(cameras.light.inv_view[2].xyz), 0.0);
-    return vec4(cameras.light.position.xyz, 1.0);
-}
+#include "shadows/light_homogeneous.glsl"
+vec4 light_h() { return shadow_light_homogeneous(); }
 
 // The triangle (a, b, c) faces the light when its normal points to the light's side of it.
 bool faces_light(vec3 a, vec3 b, vec3 c) {
