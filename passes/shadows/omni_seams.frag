@@ -7,8 +7,9 @@
 //   SEAM_PARABOLOID = axis  |d . axis| < SEAM_WIDTH |d| (within ~SEAM_WIDTH radians of the rim
 //                           where the two paraboloid discs meet).
 // There r = the largest |vis - vis(neighbour)| over the 4 neighbours 2 px away that are
-// receivers too, g = 1 (a seam pixel). Pixels in the ray-traced reference's edge band (a true
-// shadow edge nearby, ref.b) are left out: a shadow boundary crossing a seam is no artefact.
+// receivers too and lie within kSameSurface of it, g = 1 (a seam pixel). Pixels in the ray-traced
+// reference's edge band (a true shadow edge nearby, ref.b) are left out: a shadow boundary
+// crossing a seam is no artefact.
 #include "shadows/scene.glsl"
 uniform sampler2D vis;
 uniform sampler2D world;
@@ -33,10 +34,14 @@ void main() {
     if (!receiver(px) || texelFetch(ref, px, 0).b > 0.5) return;
     if (!on_seam(texelFetch(world, px, 0).xyz - SEAM_LIGHT)) return;
     float v = texelFetch(vis, px, 0).r, worst = 0.0;
+    const float kSameSurface = 0.1;   // world units; 2 px span ~0.05 on the back wall at 640x360
     const ivec2 kStep[4] = ivec2[](ivec2(2, 0), ivec2(-2, 0), ivec2(0, 2), ivec2(0, -2));
     for (int k = 0; k < 4; ++k) {
         ivec2 q = px + kStep[k];
         if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size)) || !receiver(q)) continue;
+        // Only neighbours on the same stretch of surface: across a room corner or onto a wall
+        // seen edge-on the neighbour is another receiver with its own light, not the seam.
+        if (distance(texelFetch(world, q, 0).xyz, texelFetch(world, px, 0).xyz) > kSameSurface) continue;
         worst = max(worst, abs(texelFetch(vis, q, 0).r - v));
     }
     seam = vec4(worst, 1.0, 0.0, 1.0);
