@@ -196,4 +196,47 @@ CheckResult buffer_property(const std::vector<uint32_t>& words, const graph::Che
     return r;
 }
 
+CheckResult buffer_reduction(const std::vector<uint32_t>& words, const graph::CheckDesc& c, const image::Image& of, const Mask& mask) {
+    CheckResult r;
+    std::string op = str(c.args, "op"), image = str(c.args, "of");
+    r.what = "reduction buffer '" + str(c.args, "buffer") + "'";
+    auto sel = select(c.args, words.size());
+    if (!sel) {
+        r.detail = sel.error().message;
+        return r;
+    }
+    const Selection& s = *sel;
+    const size_t ch = static_cast<size_t>(num(c.args, "of_channel", 0));
+    r.what = "reduction " + s.label + " = " + op + " of '" + image + "' channel " + std::to_string(ch);
+    // In double: min and max are one of the (float) values exactly; the sum is exact far beyond
+    // what a float sum on the GPU keeps.
+    double acc = op == "min" ? INFINITY : op == "max" ? -INFINITY : 0.0;
+    size_t counted = 0;
+    for (size_t p = 0; p < of.pixels.size() / 4; ++p) {
+        if (!mask.counts(p)) continue;
+        double x = of.pixels[p * 4 + ch];
+        acc = op == "min" ? std::min(acc, x) : op == "max" ? std::max(acc, x) : acc + x;
+        ++counted;
+    }
+    if (!counted) {
+        r.detail = "the mask counts no pixel of '" + image + "': nothing to reduce";
+        return r;
+    }
+    const bool integer = s.type != WordType::f32;
+    const double tol = num(c.args, "tol", 0.0);
+    std::vector<double> v = decode(words, s);
+    size_t bad = 0;
+    double worst = 0;
+    for (double x : v) {
+        double d = std::fabs(x - acc);
+        worst = std::isfinite(d) ? std::max(worst, d) : INFINITY;
+        bad += integer ? x != acc : !(d <= tol);
+    }
+    r.passed = bad == 0;
+    r.detail = "host " + op + " over " + std::to_string(counted) + " pixel(s) = " + show(acc, s.type) + "; buffer " +
+               (v.size() == 1 ? "holds " + show(v[0], s.type) : std::to_string(bad) + " of " + std::to_string(v.size()) + " element(s) differ") +
+               (integer ? " (exact)" : ", error " + fmt(worst) + " (tol " + fmt(tol) + ")");
+    return r;
+}
+
 } // namespace pl::check

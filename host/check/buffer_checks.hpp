@@ -5,6 +5,7 @@
 // Kinds: probe, no_nan, range, mean, sorted, sum, count.
 #pragma once
 
+#include "check/agreement.hpp"
 #include "check/args.hpp"
 #include "check/checks.hpp"
 #include "graph/sizeexpr.hpp"
@@ -30,5 +31,10 @@ std::vector<double> decode(const std::vector<uint32_t>& words, const Selection& 
 
 // Evaluates a buffer check on `words`; `env` evaluates an `expect` expression ("view.w*view.h").
 CheckResult buffer_property(const std::vector<uint32_t>& words, const graph::CheckDesc& c, const graph::SizeEnv& env);
+
+// `reduction`: every selected element equals `op` (min, max or sum) of channel `of_channel` of the
+// image `of` over the pixels `mask` counts, reduced here on the host: exactly (min and max of
+// floats are exact; a float sum may differ by `tol`), integers exactly.
+CheckResult buffer_reduction(const std::vector<uint32_t>& words, const graph::CheckDesc& c, const image::Image& of, const Mask& mask);
 
 } // namespace pl::check

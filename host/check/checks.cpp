@@ -54,6 +54,25 @@ CheckResult counter_result(const exec::CounterReading& c) {
     return r;
 }
 
+// A `reduction` buffer check: the image it reduces (`of`) and its `mask`, read from the same run.
+CheckResult reduction_check(Rendered& rendered, const std::vector<uint32_t>& words, const graph::CheckDesc& c) {
+    auto fail = [&](const std::string& why) { return CheckResult{c.kind, false, why, {}, {}, {}}; };
+    auto of = rendered.get(str(c.args, "of"));
+    if (!of) return fail(of.error().message);
+    Mask mask;
+    if (c.args.count("mask")) {
+        auto m = rendered.get(str(c.args, "mask"));
+        if (!m) return fail(m.error().message);
+        if ((*m)->width != (*of)->width || (*m)->height != (*of)->height)
+            return fail("mask '" + str(c.args, "mask") + "' is " + std::to_string((*m)->width) + "x" + std::to_string((*m)->height) + ", image '" +
+                        str(c.args, "of") + "' " + std::to_string((*of)->width) + "x" + std::to_string((*of)->height));
+        mask.img = *m;
+        mask.channel = static_cast<int>(num(c.args, "mask_channel", 0));
+        mask.invert = num(c.args, "invert_mask", 0) != 0;
+    }
+    return buffer_reduction(words, c, **of, mask);
+}
+
 struct Variant {
     std::map<std::string, graph::Value> set;  // extra param overrides
     exec::InstanceOrder order = exec::InstanceOrder::natural;
@@ -240,8 +259,9 @@ std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml,
                     if (c.args.count("buffer")) {
                         auto words = rendered->get_buffer(str(c.args, "buffer"));
                         const auto& cg = rendered->ex->graph();
-                        if (words) cr.checks.push_back(buffer_property(**words, c, exec::size_env(cg.desc, cg.view)));
-                        else cr.checks.push_back({c.kind, false, words.error().message, {}, {}, {}});
+                        if (!words) cr.checks.push_back({c.kind, false, words.error().message, {}, {}, {}});
+                        else if (c.kind == "reduction") cr.checks.push_back(reduction_check(*rendered, **words, c));
+                        else cr.checks.push_back(buffer_property(**words, c, exec::size_env(cg.desc, cg.view)));
                         continue;
                     }
                     std::string which = str(c.args, "pass", subject);

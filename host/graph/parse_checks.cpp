@@ -36,6 +36,11 @@ struct Key {
     std::vector<std::string> choices = {};
 };
 
+std::vector<Key> join(std::vector<Key> a, const std::vector<Key>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
 // `mip` and `layer` pick one level and layer of the image (default: the case's).
 const std::vector<Key> kImageSelect = {{"pass", T::name}, {"channel", T::channel}, {"channels", T::channels},
                                        {"mip", T::index}, {"layer", T::index}};
@@ -44,8 +49,8 @@ const std::vector<Key> kBufferSelect = {{"buffer", T::name}, {"index", T::index}
                                         {"field", T::index}};
 // Partial agreement: only the pixels where `mask`'s channel is nonzero count, and a `fraction`
 // of them must pass.
-const std::vector<Key> kPartial = {{"fraction", T::unit}, {"mask", T::name}, {"mask_channel", T::channel},
-                                   {"invert_mask", T::boolean}};
+const std::vector<Key> kMask = {{"mask", T::name}, {"mask_channel", T::channel}, {"invert_mask", T::boolean}};
+const std::vector<Key> kPartial = join({{"fraction", T::unit}}, kMask);
 
 struct Kind {
     const char* name;
@@ -53,11 +58,6 @@ struct Kind {
     std::vector<Key> buffer;  // keys on a buffer (besides kBufferSelect); empty with !on_buffer
     bool on_image = true, on_buffer = false;
 };
-
-std::vector<Key> join(std::vector<Key> a, const std::vector<Key>& b) {
-    a.insert(a.end(), b.begin(), b.end());
-    return a;
-}
 
 const std::vector<Kind>& kinds() {
     static const std::vector<Kind> k = {
@@ -76,6 +76,8 @@ const std::vector<Kind>& kinds() {
         {"sorted", {}, {{"group", T::count}, {"order", T::choice, {"ascending", "descending"}}}, false, true},
         {"sum", {}, {{"expect", T::expect}, {"tol", T::nonneg}}, false, true},
         {"count", {}, {{"value", T::number}, {"min", T::number}, {"max", T::number}, {"expect", T::expect}}, false, true},
+        // The selected elements equal a reduction of an image's channel computed on the host.
+        {"reduction", {}, join({{"of", T::name}, {"op", T::choice, {"min", "max", "sum"}}, {"of_channel", T::channel}, {"tol", T::nonneg}}, kMask), false, true},
     };
     return k;
 }
@@ -205,6 +207,12 @@ Status check_combination(TableReader& r, CheckDesc& c, bool on_buffer) {
         if ((kind == "probe" || kind == "sum" || kind == "count") && !has("expect"))
             return r.error(w + " needs expect = ...", c.loc);
         if (kind == "range" && !has("min") && !has("max")) return r.error(w + " needs min and/or max", c.loc);
+        if (kind == "reduction" && (!has("of") || !has("op")))
+            return r.error(w + " needs of = \"IMAGE\" and op = \"min\" | \"max\" | \"sum\" (what the elements must equal)", c.loc);
+        if (kind == "reduction" && (has("mask_channel") || has("invert_mask")) && !has("mask")) {
+            const char* k = has("mask_channel") ? "mask_channel" : "invert_mask";
+            return r.error(w + ": " + k + " describes a mask; add mask = \"IMAGE\"", r.key_loc(k));
+        }
         if (kind == "count" && has("value") && (has("min") || has("max")))
             return r.error(w + ": counts elements equal to value, or within min..max, not both", at("value"));
         if (kind == "count" && !has("value") && !has("min") && !has("max"))
@@ -277,7 +285,7 @@ Status parse_check(const toml::table& t, TableReader& owner, CheckDesc& c, const
     const bool on_buffer = r.has("buffer");
     const std::string buffer_name = on_buffer && t["buffer"].is_string() ? *t["buffer"].value<std::string>() : "";
     if (on_buffer && !kind.on_buffer)
-        return r.error(r.what() + ": " + c.kind + " checks images; it has no buffer = (buffer checks: probe, no_nan, range, mean, sorted, sum, count)",
+        return r.error(r.what() + ": " + c.kind + " checks images; it has no buffer = (buffer checks: probe, no_nan, range, mean, sorted, sum, count, reduction)",
                        r.key_loc("buffer"));
     if (!on_buffer && !kind.on_image)
         return r.error(r.what() + ": " + c.kind + " checks a buffer: add buffer = \"NAME\"", c.loc);

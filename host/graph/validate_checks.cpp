@@ -122,7 +122,7 @@ Status validate_check(const GraphDesc& g, const DeclaredNames& n, const TestDesc
         e.message = "test '" + t.name + "': " + c.kind + ": " + e.message;
         return e;
     };
-    for (const char* key : {"pass", "other", "mask"}) {
+    for (const char* key : {"pass", "other", "mask", "of"}) {
         const std::string* name = string_arg(c, key);
         if (!name || g.find_image(*name)) continue;
         Error e = ref_error("image", *name, c.keys.at(key, c.loc), "", n.images, "images");

@@ -151,3 +151,50 @@ TEST(Agreement, EmptyMaskFailsAndSaysNoPixelCounted) {
     EXPECT_TRUE(all->passed) << all->detail;
     EXPECT_NE(all->detail.find("values in [0.5, 0.5]"), std::string::npos) << all->detail;
 }
+
+// `reduction`: the buffer's element against min/max/sum of an image channel reduced on the host,
+// over the pixels a mask counts.
+namespace {
+image::Image tiny_image(const std::vector<float>& red, const std::vector<float>& alpha) {
+    image::Image img;
+    img.width = static_cast<int>(red.size());
+    img.height = 1;
+    img.pixels.assign(red.size() * 4, 0.0f);
+    for (size_t i = 0; i < red.size(); ++i) img.pixels[i * 4] = red[i], img.pixels[i * 4 + 3] = alpha[i];
+    return img;
+}
+CheckResult reduce(const std::vector<uint32_t>& w, Args a, const image::Image& of, const Mask& m = {}) {
+    a["buffer"] = std::string("b");
+    a["of"] = std::string("img");
+    return buffer_reduction(w, make_check("reduction", std::move(a)), of, m);
+}
+} // namespace
+
+TEST(BufferReduction, MinMaxExactOverTheMask) {
+    // Pixel 1 (0.25) is masked out: the min over the mask is 0.5, not 0.25.
+    image::Image img = tiny_image({0.75f, 0.25f, 0.5f, 3.0f}, {1, 0, 1, 1});
+    Mask m{&img, 3, false};
+    std::vector<uint32_t> w = {bits(0.5f), bits(3.0f)};
+    EXPECT_TRUE(reduce(w, {{"op", std::string("min")}, {"index", 0.0}}, img, m).passed);
+    EXPECT_TRUE(reduce(w, {{"op", std::string("max")}, {"index", 1.0}}, img, m).passed);
+    CheckResult unmasked = reduce(w, {{"op", std::string("min")}, {"index", 0.0}}, img);
+    EXPECT_FALSE(unmasked.passed);  // 0.25 without the mask
+    EXPECT_NE(unmasked.detail.find("host min over 4 pixel(s) = 0.25"), std::string::npos) << unmasked.detail;
+    // Exact: one ulp off fails without tol.
+    std::vector<uint32_t> off = {bits(0.5f) + 1};
+    EXPECT_FALSE(reduce(off, {{"op", std::string("min")}, {"index", 0.0}}, img, m).passed);
+    EXPECT_TRUE(reduce(off, {{"op", std::string("min")}, {"index", 0.0}, {"tol", 1e-6}}, img, m).passed);
+}
+
+TEST(BufferReduction, SumIntegersAndEmptyMask) {
+    image::Image img = tiny_image({1, 2, 3, 4}, {1, 1, 0, 1});
+    Mask m{&img, 3, false};
+    EXPECT_TRUE(reduce({7}, {{"op", std::string("sum")}, {"index", 0.0}, {"type", std::string("uint")}}, img, m).passed);
+    EXPECT_FALSE(reduce({10}, {{"op", std::string("sum")}, {"index", 0.0}, {"type", std::string("uint")}}, img, m).passed);
+    image::Image none = tiny_image({1, 2}, {0, 0});
+    CheckResult r = reduce({0}, {{"op", std::string("max")}, {"index", 0.0}}, none, Mask{&none, 3, false});
+    EXPECT_FALSE(r.passed);
+    EXPECT_NE(r.detail.find("nothing to reduce"), std::string::npos) << r.detail;
+    // Outside the buffer: the selection's error.
+    EXPECT_FALSE(reduce({0}, {{"op", std::string("max")}, {"index", 3.0}}, img).passed);
+}

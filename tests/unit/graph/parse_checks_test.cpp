@@ -110,3 +110,14 @@ TEST(ParseChecks, BufferCounter) {
     ASSERT_FALSE(typo);
     EXPECT_EQ(typo.error().hint, "did you mean 'capacity'?");
 }
+
+TEST(ParseChecks, ReductionNeedsAnImageAndAnOp) {
+    CheckDesc c = parses("kind = \"reduction\", buffer = \"b\", index = 0, of = \"z\", op = \"min\", mask = \"m\", mask_channel = 3");
+    EXPECT_EQ(c.kind, "reduction");
+    EXPECT_TRUE(has(fails("kind = \"reduction\", buffer = \"b\", index = 0, op = \"min\"").message, "needs of = \"IMAGE\""));
+    Error op = fails("kind = \"reduction\", buffer = \"b\", of = \"z\", op = \"mean\"");
+    EXPECT_TRUE(has(op.format(), "op")) << op.format();
+    EXPECT_TRUE(has(fails("kind = \"reduction\", of = \"z\", op = \"min\"").message, "checks a buffer"));
+    EXPECT_TRUE(has(fails("kind = \"reduction\", buffer = \"b\", of = \"z\", op = \"min\", mask_channel = 1").message, "add mask"));
+    EXPECT_TRUE(has(fails("kind = \"reduction\", buffer = \"b\", of = \"z\", op = \"min\", type = \"uint\", tol = 1").message, "compared exactly"));
+}
