@@ -1,5 +1,6 @@
 #include "verbs.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -61,6 +62,24 @@ Result<LoadedPreset> resolve_and_configure(const std::string& preset, const std:
     if (!overlay) return overlay.error();
     lp.options.overlay_dirs = *overlay;
     return lp;
+}
+
+// Every preset.toml under `arg` (a preset folder, a .toml, a name, or a tree of presets).
+Result<std::vector<std::filesystem::path>> collect_presets(const std::string& arg) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    std::vector<fs::path> out;
+    if (fs::is_directory(arg, ec) && !fs::exists(fs::path(arg) / "preset.toml", ec)) {
+        for (const auto& e : fs::recursive_directory_iterator(arg, ec))
+            if (e.path().filename() == "preset.toml") out.push_back(fs::absolute(e.path()));
+        std::sort(out.begin(), out.end());
+        if (out.empty()) return make_error("no preset.toml under '" + arg + "'");
+        return out;
+    }
+    auto p = exec::resolve_preset(arg);
+    if (!p) return p.error();
+    out.push_back(*p);
+    return out;
 }
 
 Result<std::vector<std::filesystem::path>> exercise_overlay(const CommonOptions& c) {

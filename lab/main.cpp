@@ -122,6 +122,18 @@ int main(int argc, char** argv) {
     new_cmd->add_flag("--with-passes", no.with_passes, "Also copy the passes/ files it reads, to edit them locally");
     add_common(new_cmd);
 
+    MutateOptions mo;
+    auto* mutate_cmd = app.add_subcommand("mutate", "Mutation testing: can the preset's tests catch a broken formula?");
+    mutate_cmd->add_option("presets", mo.targets, "Presets (folders, preset.toml, names) or trees of presets")->required();
+    mutate_cmd->add_option("--seed", mo.seed, "Which mutants are chosen (the same on every machine)");
+    mutate_cmd->add_option("--max", mo.max, "Mutants per preset (0 = all of them)")->check(CLI::NonNegativeNumber);
+    mutate_cmd->add_flag("--library", mo.library, "Also mutate the passes/ files the preset reads");
+    mutate_cmd->add_option("--child-timeout", mo.child_timeout_s, "Seconds for one mutant's test run before it counts as a runaway")
+        ->check(CLI::PositiveNumber);
+    mutate_cmd->add_flag("-v,--verbose", mo.verbose, "Show the changed line of every mutant");
+    mutate_cmd->add_option("--json", mo.json, "Write every mutant and its outcome to FILE");
+    add_common(mutate_cmd);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -139,5 +151,6 @@ int main(int argc, char** argv) {
     if (graph_cmd->parsed()) return graph_dot(preset, common);
     if (new_cmd->parsed()) return new_preset(no, common);
     if (grade_cmd->parsed()) return grade(go, common);
+    if (mutate_cmd->parsed()) return mutate(mo, common);
     return 2;
 }

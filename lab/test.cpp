@@ -17,33 +17,13 @@ namespace fs = std::filesystem;
 
 namespace pl::lab {
 
-namespace {
-
-// Every preset.toml under `arg` (a preset folder, a .toml, a name, or a tree of presets).
-Result<std::vector<fs::path>> collect(const std::string& arg) {
-    std::error_code ec;
-    std::vector<fs::path> out;
-    if (fs::is_directory(arg, ec) && !fs::exists(fs::path(arg) / "preset.toml", ec)) {
-        for (const auto& e : fs::recursive_directory_iterator(arg, ec))
-            if (e.path().filename() == "preset.toml") out.push_back(fs::absolute(e.path()));
-        std::sort(out.begin(), out.end());
-        if (out.empty()) return make_error("no preset.toml under '" + arg + "'");
-        return out;
-    }
-    auto p = exec::resolve_preset(arg);
-    if (!p) return p.error();
-    out.push_back(*p);
-    return out;
-}
-
-} // namespace
 
 int test(const TestOptions& o, const CommonOptions& c) {
     std::vector<std::string> args = o.targets;
     if (args.empty()) args = {exec::presets_dir().string(), (exec::presets_dir().parent_path() / "tests" / "graphs").string()};
     std::vector<fs::path> presets;
     for (const auto& a : args) {
-        auto found = collect(a);
+        auto found = collect_presets(a);
         if (!found) return report(found.error());
         presets.insert(presets.end(), found->begin(), found->end());
     }

@@ -6,6 +6,7 @@
 #include "util/error.hpp"
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -73,6 +74,16 @@ struct NewOptions {
     bool with_passes = false;  // also copy the passes/ files it reads (they shadow the library)
 };
 
+struct MutateOptions {
+    std::vector<std::string> targets;  // presets or trees of presets
+    uint64_t seed = 1;                 // which mutants are chosen (deterministic)
+    int max = 12;                      // mutants per preset (0 = all)
+    bool library = false;              // also mutate the passes/ files the preset reads
+    double child_timeout_s = 180.0;    // a mutant's whole test run; then it counts as a runaway
+    bool verbose = false;              // show the changed line of every mutant, not only survivors
+    std::string json;                  // --json FILE: every mutant and its outcome
+};
+
 struct GradeOptions {
     std::string preset;
     std::string out_dir = "grade-out";  // actual/expected/diff images of failed cases
@@ -89,6 +100,7 @@ int check(const std::string& preset, const std::vector<std::string>& set, const 
 int list(bool verbose);
 int gallery(const std::string& out_dir, int width, const CommonOptions& c);
 int graph_dot(const std::string& preset, const CommonOptions& c);
+int mutate(const MutateOptions& o, const CommonOptions& c);
 
 // Shared helpers.
 int report(const Error& e);  // prints the error, returns its exit code
@@ -105,6 +117,8 @@ struct LoadedPreset {
 };
 Result<LoadedPreset> resolve_and_configure(const std::string& preset, const std::string& size,
                                            const std::vector<std::string>& set, const CommonOptions& c);
+// Every preset.toml under ARG: a preset folder, a .toml, a name, or a tree of presets (sorted).
+Result<std::vector<std::filesystem::path>> collect_presets(const std::string& arg);
 // --exercise DIR: the folder must exist; returns it as an overlay list (empty without the flag).
 Result<std::vector<std::filesystem::path>> exercise_overlay(const CommonOptions& c);
 // Prints which files of the exercise folder shadow the preset's, and warns about those that

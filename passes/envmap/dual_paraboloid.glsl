@@ -36,11 +36,21 @@ vec3 dp_direction(vec2 st, int layer) {
 // whose disc contains the direction, and at the rim, where bilinear filtering reaches over
 // the disc's edge in both maps, their coverage-weighted mean: no seam if they agree there.
 // Returns the colour and the +z map's share in alpha.
-vec4 dp_lookup(sampler2DArray maps, vec3 r) {
-    r = normalize(r);
-    vec4 front = texture(maps, vec3(dp_uv(dp_coord(r, 0)), 0.0));
-    vec4 back = texture(maps, vec3(dp_uv(dp_coord(r, 1)), 1.0));
+vec4 dp_combine(vec4 front, vec4 back) {
     float coverage = max(front.a + back.a, 1e-6);
     return vec4((front.rgb + back.rgb) / coverage, front.a / coverage);
+}
+// Filtered by the maps' mips where they have them (the level from the fragment's derivatives):
+// for what the view shows.
+vec4 dp_lookup(sampler2DArray maps, vec3 r) {
+    r = normalize(r);
+    return dp_combine(texture(maps, vec3(dp_uv(dp_coord(r, 0)), 0.0)),
+                      texture(maps, vec3(dp_uv(dp_coord(r, 1)), 1.0)));
+}
+// At level 0 only: for measurements, whose pixels are not a view's pixels.
+vec4 dp_lookup_level0(sampler2DArray maps, vec3 r) {
+    r = normalize(r);
+    return dp_combine(textureLod(maps, vec3(dp_uv(dp_coord(r, 0)), 0.0), 0.0),
+                      textureLod(maps, vec3(dp_uv(dp_coord(r, 1)), 1.0), 0.0));
 }
 #endif

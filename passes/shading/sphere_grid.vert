@@ -10,11 +10,19 @@ const float kRoughness[5] = float[](0.1, 0.3, 0.5, 0.75, 1.0);
 #ifndef ALL_METAL
 #define ALL_METAL false
 #endif
+// SINGLE_MATERIAL (an optional vec2 expression: metallic, roughness): when its x is >= 0, every
+// instance is one sphere at the origin with that material, for closed-form test cases (the
+// centre pixel then has n = v on the camera's axis).
+#ifndef SINGLE_MATERIAL
+#define SINGLE_MATERIAL vec2(-1.0)
+#endif
 void main() {
     int col = gl_InstanceIndex % 5, row = gl_InstanceIndex / 5;
     vec3 p = position + vec3((float(col) - 2.0) * 1.15, row == 0 ? 0.6 : -0.6, 0.0);
+    v_material = vec2((ALL_METAL) ? 1.0 : float(row), kRoughness[col]);
+    vec2 single = SINGLE_MATERIAL;
+    if (single.x >= 0.0) p = position, v_material = single;
     v_world = p;
     v_normal = normal;
-    v_material = vec2((ALL_METAL) ? 1.0 : float(row), kRoughness[col]);
     gl_Position = frame.view_proj * vec4(p, 1.0);
 }

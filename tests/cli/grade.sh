@@ -18,12 +18,12 @@ grep -q "^FAIL white-furnace" "$work/g1.txt" || fail "white-furnace did not fail
 grep -q "hint: L_o must be 1 everywhere" "$work/g1.txt" || fail "no hint for white-furnace"
 grep -q "(yours).*(reference).*(difference)" "$work/g1.txt" || fail "no image paths for the golden"
 [ -f "$work/out1/lambert.default.diff.png" ] || fail "no diff image written"
-grep -q "grade: 0 of 3 cases pass" "$work/g1.txt" || fail "wrong summary"
+grep -q "grade: 0 of 4 cases pass" "$work/g1.txt" || fail "wrong summary"
 
 # 2. A solution (the reference's own shader) passes every case.
 mkdir "$work/solved"; cp "$preset/lambert.frag" "$work/solved/"
 "$passlab" grade shading/lambert --exercise "$work/solved" --out "$work/out2" > "$work/g2.txt" 2>&1 || fail "the reference copy does not pass: $(cat "$work/g2.txt")"
-grep -q "grade: 3 of 3 cases pass" "$work/g2.txt" || fail "the reference copy: wrong summary"
+grep -q "grade: 4 of 4 cases pass" "$work/g2.txt" || fail "the reference copy: wrong summary"
 
 # 3. A misspelt file name shadows nothing: a warning, not silence.
 mkdir "$work/typo"; cp "$preset/lambert.frag" "$work/typo/lambret.frag"

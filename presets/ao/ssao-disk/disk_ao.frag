@@ -2,7 +2,7 @@
 // Screen-space ambient occlusion, "method 2" of 004_9a40ad89bdfc582a.txt L727-735:
 //   - every pixel re-projected to its camera-space point: the receiver p, normal n;
 //   - the neighbourhood radius R converted to a radius on screen; every pixel within
-//     (here every `step`-th) re-projected: sample points q_i;
+//     (here every `stride`-th, see below) re-projected: sample points q_i;
 //   - the surface around each q_i approximated by a disk F_i of radius r_i, oriented towards
 //     the receiver, projected onto the receiver's hemisphere (F'_i), accumulated:
 //         A ~ sum over |q_i - p| < R of F'_i n.(q_i - p) = sum F_i / d_i^2 n.(q_i - p)   (L735)
@@ -16,13 +16,14 @@
 //   w_i = 2 pi (1 - d_i / sqrt(d_i^2 + r_i^2))  disk_model = cap: the exact solid angle of a
 //                                               facing disk (L743: "compute area of
 //                                               spherical cap ... don't just scale F_i")
-// F_i: the area of surface one sample stands for: (step pixels)^2 at the sample's depth,
+// F_i: the area of surface one sample stands for: (stride pixels)^2 at the sample's depth,
 // divided by |n_q . view| (a tilted surface covers more area per pixel, clamped at 1/kMinCos),
 // times disk_scale^2 (L739: "change ... radius of disks r_i").
 // orientation = receiver: the disk faces the receiver (as printed, L731); = normal: it lies in
 // the sample's tangent plane (L744: "orient disks perpendicular to normal in sample points"),
 // which multiplies w_i by |n_q . (p - q)| / d_i, the disk's foreshortening seen from p — a wall
 // seen edge-on from the receiver then stops counting in full.
+#include "common/hash.glsl"
 layout(location = 0) in vec2 uv;
 layout(location = 0) out float ao;
 uniform sampler2D normal;
@@ -40,19 +41,31 @@ void main() {
     vec3 n = normalize(nw.xyz), p = texelFetch(vpos, px, 0).xyz;
     // World size of one pixel at view depth z: z * 2 tan(fov/2) / height = 2 z / (|P11| height).
     float px_per_unit = abs(frame.proj[1][1]) * frame.resolution.y / (2.0 * -p.z);
-    int reach = min(int(params.radius * px_per_unit), params.max_pixels);
+    int reach = int(params.radius * px_per_unit);
+    // The sample spacing: every `step`-th pixel, widened where R's screen disk is larger than
+    // `taps` samples from centre to edge, so that R is honoured everywhere at a bounded cost
+    // (a near receiver's disk can be hundreds of pixels wide). Each sample then stands for
+    // stride^2 pixels of surface (F_i below), so the sum estimates the same integral.
+    int stride = max(params.step, (reach + params.taps - 1) / params.taps);
+    reach = reach / stride * stride;   // the ring of samples ends on the grid
+    // A spaced-out grid repeats the same offsets at every pixel, and the occlusion shows its
+    // pattern (rings and bands around objects). Where stride > 1 the grid is rotated by a
+    // per-pixel random angle: the same number of samples, each still standing for stride^2
+    // pixels on average, with the pattern turned into fine noise.
+    float angle = stride > 1 ? 6.28318530718 * hash_pcg(vec3(px, 0.0)) : 0.0;
+    mat2 rot = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
     float occlusion = 0.0;
-    for (int y = -reach; y <= reach; y += params.step)
-        for (int x = -reach; x <= reach; x += params.step) {
-            ivec2 q_px = px + ivec2(x, y);
+    for (int y = -reach; y <= reach; y += stride)
+        for (int x = -reach; x <= reach; x += stride) {
             if ((x == 0 && y == 0) || x * x + y * y > reach * reach) continue;
+            ivec2 q_px = px + ivec2(round(rot * vec2(x, y)));
             if (any(lessThan(q_px, ivec2(0))) || any(greaterThanEqual(q_px, size))) continue;
             vec4 qn = texelFetch(normal, q_px, 0);
             if (qn.w == 0.0) continue;
             vec3 q = texelFetch(vpos, q_px, 0).xyz, pq = q - p;
             float d = length(pq), h = dot(n, pq);
             if (d >= params.radius || h <= 0.0) continue;
-            float pixel = float(params.step) * 2.0 * -q.z / (abs(frame.proj[1][1]) * frame.resolution.y);
+            float pixel = float(stride) * 2.0 * -q.z / (abs(frame.proj[1][1]) * frame.resolution.y);
             float facing = max(abs(dot(normalize(qn.xyz), normalize(-q))), kMinCos);
             float area = pixel * pixel / facing * params.disk_scale * params.disk_scale;  // F_i
             float w = params.disk_model == DISK_MODEL_CAP ? 2.0 * kPi * (1.0 - d / sqrt(d * d + area / kPi))

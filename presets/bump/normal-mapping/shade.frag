@@ -6,6 +6,7 @@
 // interpolation — here the frame is interpolated and l, h stay in world space.)
 // The lighting is the bump family's one copy (passes/bump/lighting.glsl).
 #include "bump/lighting.glsl"
+#include "common/color.glsl"
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_uv;
 layout(location = 2) in vec3 v_t;
@@ -19,6 +20,10 @@ void main() {
     mat3 tbn = mat3(normalize(v_t), normalize(v_b), normalize(v_n));
     vec4 texel = params.mode == MODE_FLAT_MAP ? texture(nmap_flat, v_uv)
                : params.mode == MODE_RAMP_MAP ? texture(nmap_ramp, v_uv) : texture(nmap, v_uv);
+    // map_encoding = srgb_decoded shows the classic mistake: a normal map is data, not colour,
+    // but an image loaded as sRGB (an _srgb format) is passed through the sRGB curve on
+    // sampling, so 0.5 reads 0.214 and every normal leans towards -T and -B.
+    if (params.map_encoding == MAP_ENCODING_SRGB_DECODED) texel.rgb = srgb_to_linear(texel.rgb);
     vec3 n = params.mode == MODE_GEOMETRIC ? normalize(v_n) : normalize(tbn * (texel.xyz * 2.0 - 1.0));
     vec3 l = normalize(params.light_dir), v = normalize(frame.camera_pos.xyz - v_world);
     const float kSpecular = 0.35;   // highlight weight

@@ -10,6 +10,6 @@ void main() {
     vec2 q = gl_FragCoord.xy / vec2(128.0, 64.0);
     float phi = 6.2831853 * q.x, theta = 3.14159265 * q.y;
     vec3 d = vec3(sin(theta) * cos(phi), cos(theta), sin(theta) * sin(phi));
-    vec3 e = abs(dp_lookup(maps, d).rgb - texture(env, d).rgb);
+    vec3 e = abs(dp_lookup_level0(maps, d).rgb - textureLod(env, d, 0.0).rgb);
     diff = max(e.r, max(e.g, e.b));
 }

@@ -11,7 +11,7 @@ const int kSamples = 256;  // the width of the seam image
 void main() {
     float phi = 6.2831853 * gl_FragCoord.x / float(kSamples);
     vec3 r = vec3(cos(phi), sin(phi), 0.0);
-    vec4 a = texture(maps, vec3(dp_uv(dp_coord(r, 0)), 0.0)), b = texture(maps, vec3(dp_uv(dp_coord(r, 1)), 1.0));
+    vec4 a = textureLod(maps, vec3(dp_uv(dp_coord(r, 0)), 0.0), 0.0), b = textureLod(maps, vec3(dp_uv(dp_coord(r, 1)), 1.0), 0.0);
     vec3 d = abs(a.rgb / max(a.a, 1e-6) - b.rgb / max(b.a, 1e-6));
     seam = max(d.r, max(d.g, d.b));
 }

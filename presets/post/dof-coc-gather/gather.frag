@@ -1,5 +1,5 @@
 #version 450
-// Gather (000_c9f7e5de708ecbb3.txt L3126-3139): each pixel averages neighbours on a disc of the
+// Gather (000_c9f7e5de708ecbb3.txt L3140-3148): each pixel averages neighbours on a disc of the
 // largest blur radius around; a neighbour counts if its own circle of confusion reaches this
 // pixel (scatter-as-gather). The problem the document names — "sharp foreground objects leak on
 // blurry background" — is handled by its solution, depth-aware filtering: a neighbour behind

@@ -9,6 +9,7 @@
 // interpolation — here the frame is interpolated and l, h stay in world space.)
 // The lighting is the bump family's one copy (passes/bump/lighting.glsl).
 #include "bump/lighting.glsl"
+#include "common/color.glsl"
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_uv;
 layout(location = 2) in vec3 v_t;
@@ -21,6 +22,10 @@ uniform sampler2D nmap_ramp;
 void main() {
     vec4 texel = params.mode == MODE_FLAT_MAP ? texture(nmap_flat, v_uv)
                : params.mode == MODE_RAMP_MAP ? texture(nmap_ramp, v_uv) : texture(nmap, v_uv);
+    // map_encoding = srgb_decoded shows the classic mistake: a normal map is data, not colour,
+    // but an image loaded as sRGB (an _srgb format) is passed through the sRGB curve on
+    // sampling, so 0.5 reads 0.214 and every normal leans towards -T and -B.
+    if (params.map_encoding == MAP_ENCODING_SRGB_DECODED) texel.rgb = srgb_to_linear(texel.rgb);
     // TODO 1: decode the texel's RGB to the tangent-space normal n'. The map is "saved as range
     // compressed bitmap ([-1..1] mapped to [0..1])" (001_fe43b953f362fae7.txt L475): undo that
     // mapping. (A flat map stores (0.5, 0.5, 1), which must decode to n' = (0, 0, 1).)
