@@ -4,6 +4,9 @@
 // depth?), sort the hits by depth (selection sort, all of them: no cap) and composite back to
 // front with oit_over. Shares no code with any OIT method's storage, sort or blend, so a wrong
 // method (or exercise) cannot make its own reference agree.
+// The full-screen stack (params.stack = k, up to 32) is known in closed form: quad q lies at
+// depth (q+1)/(k+2), so the farthest is q = k-1 and the nearest q = 0. Only the 9-quad scene is
+// searched: llvmpipe took 18 s at 160x96 when the search ran over 32-entry private arrays.
 #include "oit/scene.glsl"
 #include "oit/composite.glsl"
 layout(location = 0) in vec2 uv;
@@ -16,6 +19,11 @@ void main() {
               && ndc.y >= kOitOpaqueRect.y && ndc.y < kOitOpaqueRect.w;
     float opaqueZ = onBar ? kOitOpaqueDepth : 1.0;
     vec3 c = onBar ? kOitOpaqueRgb : kOitBackground;
+    if (stacked) {
+        for (int q = params.stack - 1; q >= 0; --q) c = oit_over(c, vec4(oit_quad(q, params.stack).rgb, params.alpha));
+        color = vec4(c, 1.0);
+        return;
+    }
     float z[OIT_QUADS]; vec3 rgb[OIT_QUADS]; int n = 0;
     for (int q = 0; q < OIT_QUADS; ++q) {
         OitQuad k = oit_quad(q, params.stack);

@@ -7,8 +7,10 @@
 //        A < B < C < D < A: a cyclic overlap no per-object order can draw
 //        (000_c9f7e5de708ecbb3.txt L4156-4157 name both failures of sorting).
 // With params.stack = k > 0 the first k instances become full-screen quads at distinct depths
-// and the rest vanish: k * W * H fragments, the counted case.
+// and the rest vanish: k * W * H fragments, the counted case (depth complexity k, up to 32).
+// The draw always has OIT_INSTANCES instances; those past the scene's 9 (or past k) have zero area.
 const int OIT_QUADS = 9;
+const int OIT_INSTANCES = 32;
 
 struct OitQuad { vec4 rect; vec3 plane; vec3 rgb; };   // rect (x0,y0,x1,y1); z = p.x + p.y*(x-cx) + p.z*(y-cy)
 
@@ -32,7 +34,7 @@ const vec3  kOitBackground  = vec3(0.08, 0.08, 0.1);
 
 // Quad q of the scene, or of the full-screen stack of `stack` quads (an empty rect off screen: zero area).
 OitQuad oit_quad(int q, int stack) {
-    if (stack <= 0) return kOitQuads[q];
+    if (stack <= 0) return q < OIT_QUADS ? kOitQuads[q] : OitQuad(vec4(2.0), vec3(0.0), vec3(0.0));
     if (q >= stack) return OitQuad(vec4(2.0), vec3(0.0), vec3(0.0));
     return OitQuad(vec4(-1.0, -1.0, 1.0, 1.0), vec3(float(q + 1) / float(stack + 2), 0.0, 0.0),
                    kOitQuads[q % OIT_QUADS].rgb);
