@@ -171,13 +171,16 @@ CheckResult buffer_property(const std::vector<uint32_t>& words, const graph::Che
         // is <= (ascending) or >= (descending) the next; NaN is never in order.
         size_t group = static_cast<size_t>(num(c.args, "group", double(v.size())));
         bool desc = str(c.args, "order", "ascending") == "descending";
+        // tol (floats): a step back by at most tol still counts as in order (a weighted sum that
+        // should be constant moves in its last bits).
+        double tol = num(c.args, "tol", 0.0);
         size_t bad = 0, bad_groups = 0;
         std::string first;
         for (size_t g0 = 0; g0 < v.size(); g0 += group) {
             size_t end = std::min(v.size(), g0 + group);
             bool group_bad = false;
             for (size_t i = g0; i + 1 < end; ++i) {
-                bool ok = desc ? v[i] >= v[i + 1] : v[i] <= v[i + 1];
+                bool ok = desc ? v[i] >= v[i + 1] - tol : v[i] <= v[i + 1] + tol;
                 if (ok) continue;
                 group_bad = true;
                 if (!bad++)
@@ -187,7 +190,7 @@ CheckResult buffer_property(const std::vector<uint32_t>& words, const graph::Che
             bad_groups += group_bad;
         }
         r.passed = bad == 0;
-        r.what += std::string(desc ? " descending" : " ascending") + " in groups of " + std::to_string(group);
+        r.what += std::string(desc ? " descending" : " ascending") + " in groups of " + std::to_string(group) + (tol > 0 ? " (tol " + fmt(tol) + ")" : "");
         r.detail = std::to_string(bad_groups) + " of " + std::to_string((v.size() + group - 1) / group) + " group(s) out of order" +
                    (first.empty() ? "" : " (" + std::to_string(bad) + " pair(s); first: " + first + ")");
         return r;

@@ -73,7 +73,7 @@ const std::vector<Kind>& kinds() {
         {"stable", {{"tol", T::nonneg}}, {}},
         {"order_independent", {{"tol", T::nonneg}}, {}},
         {"monotone", {{"param", T::name}, {"values", T::numbers}, {"direction", T::choice, {"increasing", "decreasing"}}, {"tol", T::nonneg}}, {}},
-        {"sorted", {}, {{"group", T::count}, {"order", T::choice, {"ascending", "descending"}}}, false, true},
+        {"sorted", {}, {{"group", T::count}, {"order", T::choice, {"ascending", "descending"}}, {"tol", T::nonneg}}, false, true},
         {"sum", {}, {{"expect", T::expect}, {"tol", T::nonneg}}, false, true},
         {"count", {}, {{"value", T::number}, {"min", T::number}, {"max", T::number}, {"expect", T::expect}}, false, true},
         // The selected elements equal a reduction of an image's channel computed on the host.

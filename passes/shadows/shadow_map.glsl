@@ -87,15 +87,43 @@ float shadow_pcf_grid(sampler2D map, vec3 coord, int n) {
     return lit / float(n * n);
 }
 
-// The same n x n compares, each weighted by w(i) * w(j) of a separable kernel whose n weights
-// sum to 1 (a Gaussian for gaussian-pcf): a weighted percentage closer.
-float shadow_pcf_weighted(sampler2D map, vec3 coord, int n, float w[8]) {
+// The same n x n compares (n <= 8), compare (i, j) weighted by wx[i] * wy[j] of a separable
+// kernel whose weights each sum to 1: a weighted percentage closer (gaussian-pcf).
+float shadow_pcf_separable(sampler2D map, vec3 coord, int n, float wx[8], float wy[8]) {
     vec2 s = coord.xy * vec2(textureSize(map, 0));
     ivec2 first = ivec2(floor(s - 0.5 * float(n - 1)));
     float lit = 0.0;
     for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) lit += w[i] * w[j] * shadow_compare_texel(map, first + ivec2(i, j), coord.z);
+        for (int i = 0; i < n; ++i) lit += wx[i] * wy[j] * shadow_compare_texel(map, first + ivec2(i, j), coord.z);
     return lit;
+}
+
+// The same weights on both axes.
+float shadow_pcf_weighted(sampler2D map, vec3 coord, int n, float w[8]) { return shadow_pcf_separable(map, coord, n, w, w); }
+
+// Gaussian weights of the n texels of one axis of shadow_pcf_separable's block, centred on the
+// shaded point, not on the block: texel i's centre lies at i - offset texels from the point, with
+// offset = s - first - 0.5 (s the point in texels), so the weights slide with the point and the
+// filtered shadow varies continuously instead of in steps of the texel grid.
+//     w_i = g(i - offset) / sum_k g(k - offset),   g(x) = exp(-x^2 / (2 sigma^2))
+void shadow_gauss_weights(float offset, int n, float sigma, out float w[8]) {
+    float sum = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        float x = float(i) - offset;
+        w[i] = i < n ? exp(-x * x / (2.0 * sigma * sigma)) : 0.0;
+        sum += w[i];
+    }
+    for (int i = 0; i < 8; ++i) w[i] /= sum;   // normalised: a lit neighbourhood stays exactly lit
+}
+
+// Gaussian PCF: the n x n block around the point with Gaussian weights of width sigma texels.
+float shadow_pcf_gaussian(sampler2D map, vec3 coord, int n, float sigma) {
+    vec2 s = coord.xy * vec2(textureSize(map, 0));
+    vec2 offset = s - floor(s - 0.5 * float(n - 1)) - 0.5;
+    float wx[8], wy[8];
+    shadow_gauss_weights(offset.x, n, sigma, wx);
+    shadow_gauss_weights(offset.y, n, sigma, wy);
+    return shadow_pcf_separable(map, coord, n, wx, wy);
 }
 
 // Hardware PCF: a sampler with compare = "less_equal" returns (ref <= texel) per texel, and with

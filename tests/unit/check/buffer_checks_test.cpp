@@ -198,3 +198,12 @@ TEST(BufferReduction, SumIntegersAndEmptyMask) {
     // Outside the buffer: the selection's error.
     EXPECT_FALSE(reduce({0}, {{"op", std::string("max")}, {"index", 3.0}}, img).passed);
 }
+
+TEST(BufferSorted, TolForgivesTinyStepsBack) {
+    // 1 then 1 - 1.2e-7 (a weighted sum of ones): out of order exactly, in order within 1e-6.
+    std::vector<uint32_t> w = {bits(0.5f), bits(1.0f), bits(0.99999988f), bits(1.0f)};
+    EXPECT_FALSE(run(w, "sorted", {}).passed);
+    EXPECT_TRUE(run(w, "sorted", {{"tol", 1e-6}}).passed);
+    EXPECT_FALSE(run({bits(1.0f), bits(0.5f)}, "sorted", {{"tol", 1e-6}}).passed);
+    EXPECT_TRUE(run({bits(1.0f), bits(0.99999988f)}, "sorted", {{"tol", 1e-6}, {"order", std::string("descending")}}).passed);
+}
