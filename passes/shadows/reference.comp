@@ -17,11 +17,20 @@ layout(local_size_x = 8, local_size_y = 8) in;
 uniform sampler2D world;
 layout(rgba16f) uniform writeonly image2D ref;
 
+// A point light ends the shadow ray: casters beyond it do not shadow o.
+float shadow_ray_tmax(vec3 o) {
+#ifdef SHADOW_POINT_LIGHT
+    return distance(o, SHADOW_POINT_LIGHT);
+#else
+    return 1e30;
+#endif
+}
+
 bool shadow_ray_occluded(vec3 o, vec3 l) {
     // Mesh k of the BVH is object k + 1 of scene.glsl. tmin: a ground point does not hit the
     // box's base, which lies in the ground's plane.
     for (int k = 0; k < 2; ++k)
-        if (pl_bvh_occluded(uint(k), inverse(shadow_model(k + 1)), o, l, 1e-4, 1e30)) return true;
+        if (pl_bvh_occluded(uint(k), inverse(shadow_model(k + 1)), o, l, 1e-4, shadow_ray_tmax(o))) return true;
     return false;
 }
 
