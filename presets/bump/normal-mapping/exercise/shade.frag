@@ -19,9 +19,11 @@ layout(location = 0) out vec4 hdr;
 uniform sampler2D nmap;
 uniform sampler2D nmap_flat;
 uniform sampler2D nmap_ramp;
+uniform sampler2D nmap_ramp_u;
 void main() {
     vec4 texel = params.mode == MODE_FLAT_MAP ? texture(nmap_flat, v_uv)
-               : params.mode == MODE_RAMP_MAP ? texture(nmap_ramp, v_uv) : texture(nmap, v_uv);
+               : params.mode == MODE_RAMP_MAP ? texture(nmap_ramp, v_uv)
+               : params.mode == MODE_RAMP_U_MAP ? texture(nmap_ramp_u, v_uv) : texture(nmap, v_uv);
     // map_encoding = srgb_decoded shows the classic mistake: a normal map is data, not colour,
     // but an image loaded as sRGB (an _srgb format) is passed through the sRGB curve on
     // sampling, so 0.5 reads 0.214 and every normal leans towards -T and -B.
