@@ -11,6 +11,11 @@
 const float kTwoPi = 6.28318530718;
 const vec2 kSpinCentre = vec2(0.5);   // the texture's centre: spin about it, not about (0, 0)
 
+// The animation's clock: the frame time plus the param the tests use to jump a period ahead.
+// One definition for the picture and the probes, so the periodicity cases (t against
+// t + period, through time_offset) cannot silently compare a render with itself.
+float animation_time() { return frame.time + params.time_offset; }
+
 mat3 texture_matrix(float t, vec2 scroll, float spin) {
     vec2 offset = fract(scroll * t);                   // one period of the repeat
     float a = kTwoPi * fract(spin * t);                // spin in turns per second

@@ -10,7 +10,7 @@
 #include "animation.glsl"
 layout(location = 0) out vec4 result;
 void main() {
-    float t = frame.time + params.time_offset;
+    float t = animation_time();
     vec2 offset = fract(params.scroll * t);
     float spin = params.mode == MODE_ROTATE ? params.spin : 0.0;
     mat3 m = texture_matrix(t, params.scroll, spin);

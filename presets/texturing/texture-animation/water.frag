@@ -14,7 +14,7 @@ uniform sampler2DArray frames;
 #include "animation.glsl"
 
 void main() {
-    float t = frame.time + params.time_offset;
+    float t = animation_time();
     vec3 c;
     if (params.mode == MODE_VIDEO) {
         int n = textureSize(frames, 0).z;
