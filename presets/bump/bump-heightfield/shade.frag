@@ -19,11 +19,13 @@ layout(location = 1) out vec4 normal_out;   // xyz: the world-space normal the l
 uniform sampler2D off_tiles;
 uniform sampler2D off_flat;
 uniform sampler2D off_ramp;
+uniform sampler2D off_ramp_v;
 const float kSpecular = 0.35;   // highlight weight, as presets/bump/normal-mapping
 
 vec4 offsets(vec2 t) {
     if (params.heights == HEIGHTS_CONSTANT) return texture(off_flat, t);
     if (params.heights == HEIGHTS_RAMP) return texture(off_ramp, t);
+    if (params.heights == HEIGHTS_RAMP_V) return texture(off_ramp_v, t);
     return texture(off_tiles, t);
 }
 
