@@ -9,7 +9,9 @@
 //        padded to N with kNoLight, which shades as a black light (branch-free).
 //   ONE_LIGHT (L770, L790-798, option 2): one pass per light, additive blending; the pass
 //        draws only the objects in that light's list.
-// `missing` (BATCH only; tests): lights contributing > 1/1024 that the object's list lacks.
+// `missing` (BATCH only; tests): x = lights contributing > 1/1024 that the object's list lacks,
+// y = lights the verification looked at (params.lights on geometry): a verification loop that
+// does not run would report 0 missing and pass, so the test probes y too.
 #include "deferred/lights.glsl"
 #include "object_lists.glsl"
 layout(location = 0) in vec3 v_world;
@@ -18,7 +20,7 @@ layout(location = 2) flat in vec4 v_material;
 layout(location = 3) flat in int v_object;
 layout(location = 0) out vec4 lit;
 #ifdef BATCH
-layout(location = 1) out float missing;
+layout(location = 1) out vec2 missing;
 #endif
 layout(std430) readonly buffer object_lights { uint list_words[]; };
 const float kShininess = 32.0;
@@ -53,13 +55,14 @@ void main() {
         l.color *= idx == kNoLight ? 0.0 : 1.0;
         c += shade_point_light(l, v_world, n, v, v_material.rgb, v_material.a, kShininess);
     }
-    missing = 0.0;
+    missing = vec2(0.0);
     for (int i = 0; params.verify && i < params.lights; ++i) {
+        missing.y += 1.0;
         vec3 e = one_light(i, n, v);
         if (max(e.r, max(e.g, e.b)) <= 1.0 / 1024.0) continue;
         bool listed = false;
         for (uint k = 0u; k < count; ++k) listed = listed || list_words[base + 1u + k] == uint(i);
-        missing += listed ? 0.0 : 1.0;
+        missing.x += listed ? 0.0 : 1.0;
     }
 #endif
     if (params.show == SHOW_COUNT) c = light_count_heat(float(count) / 64.0);
