@@ -1,12 +1,14 @@
 #version 450
 // A dark room with glowing lamps (radiance params.emission) and dim walls, or one bright
-// 16x16 square in the middle of black (aligned to 4x4 blocks, for the energy test).
+// 16x16 square in the middle of black (aligned to 4x4 blocks, for the energy test; square_offset:
+// moved by (2, 1) pixels, so the bright pass's 4x4 blocks cut it at every side).
 #include "common/hash.glsl"
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 hdr;
 void main() {
     vec2 p = gl_FragCoord.xy, c = frame.resolution.xy * 0.5;
-    if (params.scene == SCENE_SQUARE) {
+    if (params.scene == SCENE_SQUARE || params.scene == SCENE_SQUARE_OFFSET) {
+        if (params.scene == SCENE_SQUARE_OFFSET) c += vec2(2.0, 1.0);
         bool in_square = all(greaterThanEqual(p, c - 8.0)) && all(lessThan(p, c + 8.0));
         hdr = vec4(vec3(in_square ? params.emission : 0.0), 1.0);
         return;
