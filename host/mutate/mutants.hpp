@@ -1,5 +1,5 @@
 // Single-token mutations of GLSL source, for `passlab mutate`: the deliberate breaks a preset
-// author would try by hand (STYLE.md: an invariant is trusted once it has been seen to fail on a
+// author would try by hand (docs/test-strength.md: an invariant is trusted once it has been seen to fail on a
 // broken formula), generated systematically so that every case's power can be measured.
 //
 // Each mutant changes one place: an operator swapped, a comparison flipped, min and max swapped,

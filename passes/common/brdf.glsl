@@ -24,7 +24,7 @@ float blinn_phong_normalized(vec3 n, vec3 h, float m) {
 // Beckmann distribution as printed in 000_c9f7e5de708ecbb3.txt L1163-1173 (m: RMS slope):
 //     D = 1 / (4 m^2 (n.h)^4) * exp(((n.h)^2 - 1) / (m^2 (n.h)^2))
 // With 4 m^2 the projected-area integral  integral D (n.h) d(omega_h)  is pi/4 for every m,
-// not 1 (TECHNIQUES.md pitfall); ndf_beckmann below is the normalised form.
+// not 1 (docs/catalogue.md pitfall); ndf_beckmann below is the normalised form.
 float ndf_beckmann_printed(float n_dot_h, float m) {
     float c2 = n_dot_h * n_dot_h;
     return exp((c2 - 1.0) / (m * m * c2)) / (4.0 * m * m * c2 * c2);
@@ -51,7 +51,7 @@ float g_torrance_sparrow(float n_dot_h, float n_dot_v, float n_dot_l, float v_do
 }
 
 // 002 L228-250: the Smith forms it uses already contain 1/(4 (n.l)(n.v)) — "visibility"
-// terms V, so f_spec = D F V with no further division (a pitfall TECHNIQUES.md notes).
+// terms V, so f_spec = D F V with no further division (a pitfall docs/catalogue.md notes).
 // Smith-GGX, exact: V = 1 / (GV.x GV.y), GV = n.vl + sqrt((n.vl - n.vl a2) n.vl + a2).
 float v_smith_ggx(float n_dot_v, float n_dot_l, float roughness) {
     float a = roughness * roughness, a2 = a * a;

@@ -70,7 +70,7 @@ float simplex_noise(vec2 p) {
 // jittered by a hash of the cell; F_k = distance to the k-th nearest. Returns (F1, F2, F3). The
 // listing searches 3x3 cells (enough for F1, which is at most sqrt 2: the own cell's point is
 // never farther than the cell's diagonal); F2 and F3 can lie further out, so we search 5x5
-// (TECHNIQUES.md pitfall). The listing's `frac` is HLSL; GLSL's is fract.
+// (docs/catalogue.md pitfall). The listing's `frac` is HLSL; GLSL's is fract.
 vec2 worley_point(vec2 cell) { return cell + hash_pcg3(vec3(cell, 3.0)).xy; }
 vec3 worley_noise(vec2 p) {
     vec2 c = floor(p);

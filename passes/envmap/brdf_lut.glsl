@@ -1,7 +1,7 @@
 // The split-sum BRDF integration of 002_644d46bdce7e5305.txt L312-417 (Karis 2013):
 //   (1/N) sum f cos / p = F0 * LUT.r + LUT.g
 // integrated by importance-sampling GGX with Hammersley points, n = (0, 0, 1), v in the xz
-// plane. Fixes to the listing (TECHNIQUES.md pitfalls): its #ifndef GL4_AND_UP guard (L353) is
+// plane. Fixes to the listing (docs/catalogue.md pitfalls): its #ifndef GL4_AND_UP guard (L353) is
 // inverted (the bit-twiddling branch runs where bitfieldReverse exists); its `ul` literals
 // (L358-361) are not GLSL; the loop calls specularG2 (L411) but the function is specularG (L387). G here is the Smith-GGX
 // visibility form (it holds 1/(4 n.l n.v)), hence the 4 v.h / n.h factor and no other.

@@ -2,7 +2,7 @@
 // environment as the orthographic reflections in two parabolic mirrors, one per hemisphere.
 // The document prints one map's coordinates (L214-216),
 //     s = r_x / (1 - r_z),   t = r_y / (1 - r_z)
-// which covers r_z <= 0 (|(s, t)| <= 1 there). Pitfall (TECHNIQUES.md): the other map needs
+// which covers r_z <= 0 (|(s, t)| <= 1 there). Pitfall (docs/catalogue.md): the other map needs
 // 1 + r_z and covers r_z >= 0. Layer 0 here is the +z map (1 + r_z), layer 1 the document's -z
 // map (1 - r_z). Inverse, with rho^2 = s^2 + t^2:
 //     r = (2 s, 2 t, +-(1 - rho^2)) / (1 + rho^2)

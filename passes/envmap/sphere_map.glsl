@@ -1,7 +1,7 @@
 // Sphere mapping (001_fe43b953f362fae7.txt L151-189): the map is the orthographic image of a
 // chrome ball seen by the eye; its centre reflects back to the eye, the back of the world maps
 // onto the outer ring (the singularity, L167-169). 001 gives no formula; this is the classic
-// OpenGL GL_SPHERE_MAP one (TECHNIQUES.md pitfall), for an eye-space reflection vector r (the eye
+// OpenGL GL_SPHERE_MAP one (docs/catalogue.md pitfall), for an eye-space reflection vector r (the eye
 // looks down -z, so "back to the eye" is r = +z):
 //     m = 2 sqrt(r_x^2 + r_y^2 + (r_z + 1)^2),     (s, t) = r.xy / m + 0.5
 // Derivation: the ball normal at image point p = 2 (s, t) - 1 is n = (p, sqrt(1 - |p|^2)); the

@@ -1,6 +1,6 @@
 #version 450
 // The stencil invariant, per pixel: reflected fragments written where the mirror does not cover
-// the pixel:  leak * (1 - mask). Must be 0 everywhere (TECHNIQUES 3.5); `reflected` is the
+// the pixel:  leak * (1 - mask). Must be 0 everywhere (docs/catalogue.md); `reflected` is the
 // mask target the reflected passes wrote, `mask` the mirror's coverage (what the stencil holds).
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 outside;

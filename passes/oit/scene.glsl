@@ -1,4 +1,4 @@
-// The shared OIT scene (TECHNIQUES.md 3.10): transparent quads that one draw instances, each an
+// The shared OIT scene (docs/catalogue.md 3.10): transparent quads that one draw instances, each an
 // NDC rectangle (Vulkan: y = -1 is the top row) on a depth plane, so every OIT preset and every
 // analytic reference evaluates the same geometry. Depth is NDC z in [0, 1] (smaller is nearer).
 //   0-2  three flat overlapping quads (sorting per object gets these right);

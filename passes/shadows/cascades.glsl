@@ -1,4 +1,4 @@
-// Cascaded shadow maps, shared by cascaded-shadow-maps and sdsm (TECHNIQUES.md 3.11).
+// Cascaded shadow maps, shared by cascaded-shadow-maps and sdsm (docs/catalogue.md 3.11).
 // 000_c9f7e5de708ecbb3.txt L4709-4719: partition the view frustum, one cascade (shadow map) per
 // sub-frustum, all in one layered depth image; cascades overlap for blending.
 // 002_644d46bdce7e5305.txt L1867-1898 (SDSM): z-partitioning from the depth buffer's tight

@@ -1,6 +1,6 @@
 #version 450
 // Test-only: continuity of a point light's visibility across the seams of its shadow maps
-// (TECHNIQUES.md 3.11: cube "visibility along face seams differs < 0.02 from neighbours",
+// (docs/catalogue.md 3.11: cube "visibility along face seams differs < 0.02 from neighbours",
 // paraboloid "continuous across the seam (< 0.02)"). Seam pixels, for d = p - SEAM_LIGHT:
 //   cube (default)          the two largest |components| of d differ by less than SEAM_WIDTH of
 //                           the largest (d within ~SEAM_WIDTH radians of an edge between faces);

@@ -1,4 +1,4 @@
-// The shared shadow scene (TECHNIQUES.md 3.11 "Shared harness"): a ground plane, two closed
+// The shared shadow scene (docs/catalogue.md 3.11 "Shared harness"): a ground plane, two closed
 // casters, one light. Every shadow preset draws these objects with these placements, so their
 // visibility images compare pixel for pixel.
 //

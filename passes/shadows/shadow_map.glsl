@@ -1,4 +1,4 @@
-// Shadow-map lookups shared by the shadow presets (TECHNIQUES.md 3.11): light-space projection,
+// Shadow-map lookups shared by the shadow presets (docs/catalogue.md 3.11): light-space projection,
 // depth compare, constant + slope-scale bias, percentage-closer filtering.
 //
 // Williams' two steps (000_c9f7e5de708ecbb3.txt L4568-4585; 003_cfc3b5b225ddab3d.txt L252-260):

@@ -2,7 +2,7 @@
 # The shadows family's comparison table (presets/shadows/README.md), measured on this machine:
 # for every preset under presets/shadows/ it runs `passlab test -v` (the invariants, with their
 # measured figures) and `passlab bench` at 640x360 (frame median), and reads the shadow storage
-# from preset.toml. Methods of the catalogue (TECHNIQUES.md 3.11) without a preset yet get a row
+# from preset.toml. Methods of the catalogue (docs/catalogue.md 3.11) without a preset yet get a row
 # saying so; they fill in when their folder exists.
 #
 # Usage: tests/bench/shadows_compare.sh [PASSLAB] [--write]

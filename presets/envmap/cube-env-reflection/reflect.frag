@@ -4,7 +4,7 @@
 // the direction only:
 //     R = V - 2 (N.V) N            V from the eye to the surface, all in world space
 //     color = mix(decal, env(R), reflectivity)
-// Pitfall (TECHNIQUES.md): R must be in the map's space. Computed in eye space it needs the
+// Pitfall (docs/catalogue.md): R must be in the map's space. Computed in eye space it needs the
 // inverse of the view's 3x3 first; here everything is world space from the start.
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;

@@ -1,7 +1,7 @@
 #version 450
 // Checks of the sphere-map formula on 4096 random eye-space directions r at angle alpha from
 // the eye direction +z (alpha uniform in [0, ALPHA_MAX]):
-//   .r = | |uv - 0.5| - sin(alpha / 2) / 2 |      (where the direction lands, TECHNIQUES.md)
+//   .r = | |uv - 0.5| - sin(alpha / 2) / 2 |      (where the direction lands, docs/catalogue.md)
 //   .g = | sphere_map_direction(uv) - r |          (round trip through the inverse)
 #include "envmap/sphere_map.glsl"
 #include "common/hash.glsl"

@@ -9,11 +9,11 @@
 //      sample.z > depth buffer (the ray went behind what the camera sees)         (L4013-4052)
 //   4. binary search, 6 halvings between the sample before and the one after    (L4056-4084)
 //   5. the reflected colour is the lit image at the intersection's (u, v).
-// BUG IN THE PRINTED CODE (L4028-4041, TECHNIQUES pitfall): it #defines
+// BUG IN THE PRINTED CODE (L4028-4041, catalogue pitfall): it #defines
 // MAX_REFLECTION_RAY_MARCH_STEP 0.02 but the loop multiplies by ReflectionRayMarchStep, which
 // is declared nowhere: it does not compile. Fixed here: one name, kept as a param
 // (params.march_step, default the printed 0.02).
-// ADDED (TECHNIQUES pitfall): a thickness test. The printed test `RaySample.z > ZBufferVal`
+// ADDED (catalogue pitfall): a thickness test. The printed test `RaySample.z > ZBufferVal`
 // accepts any point behind the depth buffer, however far behind: rays passing *behind* an
 // object "hit" its front. Here, after the binary search, the ray counts as hitting only when it
 // ends at most params.thickness (view-space units) behind the depth buffer; otherwise it marches

@@ -5,7 +5,7 @@
 //      reference's reflected objects) is seen by the camera, or the truth is the sky (then the
 //      right answer is a miss and a hit is false, e.g. behind an object); and the pixel is not on
 //      an edge of the true reflection
-//   g: r and a match: every displayed 8-bit channel within 4/255 (TECHNIQUES 3.5)
+//   g: r and a match: every displayed 8-bit channel within 4/255 (docs/catalogue.md)
 //   b: any hit on the mirror (SSR's limitations included: 000 L4086-4120)
 //   a: b and a match
 #include "common/color.glsl"

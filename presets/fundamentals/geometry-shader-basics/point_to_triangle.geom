@@ -1,7 +1,7 @@
 #version 450
 // "A very simple geometry shader program" (004_9a40ad89bdfc582a.txt L1021-1040): every point
 // becomes a triangle with corners at clip-space offsets (0, d), (d, -d), (-d, -d), coloured red,
-// green, blue. Ported from #version 120 + GL_EXT_geometry_shader4 (TECHNIQUES.md pitfall):
+// green, blue. Ported from #version 120 + GL_EXT_geometry_shader4 (docs/catalogue.md pitfall):
 //   gl_PositionIn[0]      -> gl_in[0].gl_Position
 //   gl_FrontColor         -> a user output (location 0)
 //   GL_GEOMETRY_INPUT_TYPE / OUTPUT_TYPE / VERTICES_OUT (L905-925, L1003-1013)

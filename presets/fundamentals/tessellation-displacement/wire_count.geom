@@ -1,7 +1,7 @@
 #version 450
 // After the tessellator: every generated triangle passes here once. It gets barycentric
 // corner colours for the wireframe overlay and, with COUNT, adds 1 to the counter `tris`
-// (TECHNIQUES.md says L^2 triangles for level L; the tessellator makes 1.5 L^2 for even L,
+// (docs/catalogue.md says L^2 triangles for level L; the tessellator makes 1.5 L^2 for even L,
 // 1.5 L^2 - 0.5 for odd: preset.toml, README).
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;

@@ -1,6 +1,6 @@
 #version 450
 // The vertex stage's one duty (000_c9f7e5de708ecbb3.txt L53-185): transform each vertex to
-// clip space, gl_Position = mvp * vec4(p, 1) (TECHNIQUES 3.1), and pass on its attributes, a
+// clip space, gl_Position = mvp * vec4(p, 1) (docs/catalogue.md), and pass on its attributes, a
 // colour per vertex, which the rasterizer interpolates across the triangle.
 // mvp = P * V * M. In this 2D lesson V and P are the identity (object x, y are clip x, y,
 // Vulkan's y pointing down), and M rotates about z by params.angle: a transform that moves the

@@ -1,5 +1,5 @@
 #version 450
-// Tests (one texel, fp32): TECHNIQUES.md's "one bright source at p puts flare energy only on
+// Tests (one texel, fp32): docs/catalogue.md's "one bright source at p puts flare energy only on
 // the line p - centre (angle error < 2 degrees)" for a source anywhere, fitted, not probed.
 // Over every texel q of the quarter-resolution flare (texel centres, in texels, which are
 // square when the view is), with energy E(q) = r + g + b:

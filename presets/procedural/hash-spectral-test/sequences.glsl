@@ -8,7 +8,7 @@
 //   pcg:   a hash of the index, u_i = pcg3d(i, seed, 0).x (passes/common/hash.glsl)
 //   sin:   the shader hash of 002_644d46bdce7e5305.txt L1152-1155 / L2379-2381,
 //          x_i = fract(sin(i) * 43758.5453): its low bits depend on the driver's sin()
-//          (TECHNIQUES.md pitfall), so it is shown but kept out of the goldens.
+//          (docs/catalogue.md pitfall), so it is shown but kept out of the goldens.
 #include "common/hash.glsl"
 
 const uint kRanduA = 65539u;               // 2^16 + 3

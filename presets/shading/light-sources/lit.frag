@@ -5,7 +5,7 @@
 //   directional:  E constant, from direction d                       (L859-865)
 //   spot:         a point light times a cone factor around d         (L869-877)
 // The document gives the spot's inner and outer angles but no falloff between them; ours is
-// smoothstep(cos theta_o, cos theta_i, dot(-l, d)) (TECHNIQUES.md: say so).
+// smoothstep(cos theta_o, cos theta_i, dot(-l, d)) (docs/catalogue.md: say so).
 // LIGHTS is a bit mask of the lights this pass adds: 1 point, 2 spot, 4 directional.
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;

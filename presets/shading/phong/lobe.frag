@@ -1,5 +1,5 @@
 #version 450
-// The highlight-shape invariant (TECHNIQUES.md, shading/phong), in the plane n = +z:
+// The highlight-shape invariant (docs/catalogue.md, shading/phong), in the plane n = +z:
 // theta_i = 60 deg, m = 100, v 5 degrees away from the mirror direction r, once rotated in the
 // plane of incidence (towards n) and once out of it (about the axis r x y).
 //   x = 0: Phong (v.r)^m, in plane        x = 1: Phong, out of plane      x = 2: |x0 - x1|

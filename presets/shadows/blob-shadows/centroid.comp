@@ -1,6 +1,6 @@
 #version 450
 // Test-only: each blob's centroid on screen against the projection of its hit point H
-// (TECHNIQUES.md 3.11: "blob centred on the hit point +- 1 px"). Run 0 (groups over the view)
+// (docs/catalogue.md 3.11: "blob centred on the hit point +- 1 px"). Run 0 (groups over the view)
 // sums the pixels whose blob_id is i + 1; run 1 (one thread) divides and projects the hit point
 // as expected_hit() finds it. The test views
 // the ground from straight above, where the disc's image is a disc around H's image.

@@ -1,6 +1,6 @@
 #version 450
 // Test-only: the 2-pixel edge band where the stencil result and the shadow map may legitimately
-// differ (TECHNIQUES.md 3.11: ">= 99% agreement outside 2-px edge bands"). A pixel is in the band
+// differ (docs/catalogue.md 3.11: ">= 99% agreement outside 2-px edge bands"). A pixel is in the band
 // when, within 2 pixels (a 5 x 5 block), either visibility image changes value: the map's edges
 // are a texel off and stair-stepped, the volumes' follow the faceted silhouette exactly.
 // The background (world.w == 0, nothing to shadow) is left out too, so the share is taken over

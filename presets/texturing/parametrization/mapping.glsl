@@ -11,7 +11,7 @@
 // All have distortions and singularities (L1579-1582): the poles of the sphere, the caps of
 // the cylinder, the box's edges.
 //
-// Pitfall (TECHNIQUES.md), fixed and stated: atan jumps from +pi to -pi behind the object,
+// Pitfall (docs/catalogue.md), fixed and stated: atan jumps from +pi to -pi behind the object,
 // so u jumps from 1 to 0 between two pixels of a 2x2 quad; the implicit derivative there is
 // ~1 texture width per pixel and the sampler picks the smallest mip: a line of the texture's
 // mean colour along the seam. Fix: textureGrad with the analytic derivative of the angle,

@@ -4,7 +4,7 @@
 // second camera built here from params with passes/common/camera.glsl:
 //     (s, t, r, q) = B * P_proj * V_proj * (x, y, z, 1)
 //     slide coordinates (s/q, t/q), B = scale-and-bias [-1, 1] -> [0, 1]
-// Pitfall (TECHNIQUES.md): a point BEHIND the projector has q = w_clip = -z_view < 0, and the
+// Pitfall (docs/catalogue.md): a point BEHIND the projector has q = w_clip = -z_view < 0, and the
 // division by a negative q mirrors it back into [0, 1]: without the q > 0 test every projector
 // also throws an upside-down copy of the slide backwards. mask_behind = false shows that bug.
 #ifndef PROJECTIVE_PROJECTOR_GLSL
