@@ -36,7 +36,7 @@ void main() {
             lo = min(lo, c), hi = max(hi, c);
             // Where this neighbour's sample lies, seen from our centre. aa/shapes.vert moves the
             // geometry by +j pixels, so a pixel centre sees the scene point at centre - j
-            // (TECHNIQUES' pitfall: the jitter's sign; it used to be + j here, which reconstructs
+            // (the catalogue's pitfall: the jitter's sign; it used to be + j here, which reconstructs
             // from samples mirrored through the centre: blackman-harris-converges 0.569, not 0.351).
             vec2 d = vec2(x, y) - j;
             float w = params.reconstruct == RECONSTRUCT_BOX ? float(x == 0 && y == 0) : exp(-kBlackmanHarris * dot(d, d));

@@ -12,7 +12,7 @@
 // they push from the same vertex, and the plain sum would push twice as hard.
 // Near one segment the map is radial: r' = r + a w psi(r / w), psi(u) = u / (1 + u^2)^2. At
 // the line dr'/dr = 1 + a: the noise of a band (1 + a) times wider is squeezed next to the line,
-// its frequency across the line rises by 1 + a (TECHNIQUES: "contract"), and far away
+// its frequency across the line rises by 1 + a (the catalogue: "contract"), and far away
 // (u >> 1) p' - p falls off as a w / u^3.
 // Pitfalls, stated:
 // - A contraction must be paid for by a stretch further out (r' - r -> 0 again): dr'/dr =
