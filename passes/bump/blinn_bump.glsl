@@ -14,7 +14,7 @@
 // plane and sphere generators are), the offsets must flip sign with it, or every bump is lit
 // from the wrong side. handedness w = sign((P_u x P_v) . N_n); N is taken as the smooth normal
 // N_n scaled to |P_u x P_v| (analytically equal to w P_u x P_v, without the facets). Returns
-// the unnormalised N' (offset normals need renormalising, 001 L741-780 / TECHNIQUES pitfall).
+// the unnormalised N' (offset normals need renormalising, 001 L741-780 / catalogue pitfall).
 vec3 blinn_bump_normal(vec3 N_n, vec3 P_u, vec3 P_v, float h_u, float h_v) {
     vec3 cross_uv = cross(P_u, P_v);
     float w = dot(cross_uv, N_n) < 0.0 ? -1.0 : 1.0;

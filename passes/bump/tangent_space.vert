@@ -22,6 +22,6 @@ void main() {
     v_uv = uv;
     v_n = m * normal;
     v_t = m * tangent.xyz;
-    v_b = cross(v_n, v_t) * tangent.w;  // 001 L801-862 / TECHNIQUES pitfall: b = n x t, times handedness
+    v_b = cross(v_n, v_t) * tangent.w;  // 001 L801-862 / catalogue pitfall: b = n x t, times handedness
     gl_Position = frame.view_proj * vec4(v_world, 1.0);
 }

@@ -2,7 +2,7 @@
 // L251-260, "angle of incidence = angle of reflection"):
 //     R = V - 2 (N.V) N,   V = normalize(p - eye) (from the eye to the surface), N the unit normal
 // World space, because the environment maps (cube, sphere-map eye frame, paraboloids) are built in
-// world axes: an eye-space R would need the inverse view rotation first (TECHNIQUES pitfall).
+// world axes: an eye-space R would need the inverse view rotation first (catalogue pitfall).
 // Shared by the mirror/glossy shaders of envmap/cube-map-dynamic, sphere-map,
 // dual-paraboloid-map and specular-prefiltered-env.
 #ifndef PASSLAB_ENVMAP_REFLECT_GLSL
