@@ -1,0 +1,18 @@
+// The cloud: PUFFS view-aligned billboards (000_c9f7e5de708ecbb3.txt L3733-3739: clouds drawn
+// as many opaque billboards, each the image of a round puff), placed by a fixed hash inside a
+// flattened ellipsoid. Shared by the draw (puff.vert) and the brute-force union (union.frag), so
+// both see the same centres and sizes.
+#include "particles/billboard.glsl"
+
+uint pl_cloud_hash(uint x) {   // a small integer hash (Wang-style), deterministic on every device
+    x ^= x >> 16; x *= 0x7feb352du; x ^= x >> 15; x *= 0x846ca68bu; x ^= x >> 16;
+    return x;
+}
+float pl_cloud_unit(uint i, uint k) { return float(pl_cloud_hash(i * 4u + k) >> 8) / 16777216.0; }
+
+vec3 puff_centre(int i) {
+    uint u = uint(i);
+    vec3 r = vec3(pl_cloud_unit(u, 0u), pl_cloud_unit(u, 1u), pl_cloud_unit(u, 2u)) * 2.0 - 1.0;
+    return vec3(2.2 * r.x, 0.35 * r.y + 0.25 * (1.0 - abs(r.x)), 0.9 * r.z);
+}
+float puff_size(int i) { return params.size * (0.6 + 0.6 * pl_cloud_unit(uint(i), 3u)); }
