@@ -4,11 +4,9 @@
 // both see the same centres and sizes.
 #include "particles/billboard.glsl"
 
-uint pl_cloud_hash(uint x) {   // a small integer hash (Wang-style), deterministic on every device
-    x ^= x >> 16; x *= 0x7feb352du; x ^= x >> 15; x *= 0x846ca68bu; x ^= x >> 16;
-    return x;
-}
-float pl_cloud_unit(uint i, uint k) { return float(pl_cloud_hash(i * 4u + k) >> 8) / 16777216.0; }
+#include "common/hash.glsl"
+// Uniform in [0, 1): integer hash only (common/hash.glsl, PCG3D), the same bits on every device.
+float pl_cloud_unit(uint i, uint k) { return float(pcg3d(uvec3(i, k, 7u)).x) * (1.0 / 4294967296.0); }
 
 vec3 puff_centre(int i) {
     uint u = uint(i);

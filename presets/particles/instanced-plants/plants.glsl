@@ -9,13 +9,11 @@
 
 struct PlPlant { float height, bend, width, leaf; int leaves; };
 
-uint pl_plant_hash(uint x) {   // integer hash, deterministic on every device
-    x ^= x >> 16; x *= 0x7feb352du; x ^= x >> 15; x *= 0x846ca68bu; x ^= x >> 16;
-    return x;
-}
-float pl_plant_unit(uint a, uint k) { return float(pl_plant_hash(a * 8u + k) >> 8) / 16777216.0; }
+#include "common/hash.glsl"
+// Uniform in [0, 1): integer hash only (common/hash.glsl, PCG3D), the same bits on every device.
+float pl_plant_unit(uint a, uint k) { return float(pcg3d(uvec3(a, k, 11u)).x) * (1.0 / 4294967296.0); }
 
-int plant_species(int instance) { return int(pl_plant_hash(uint(instance) + 101u) % uint(SPECIES)); }
+int plant_species(int instance) { return int(pcg3d(uvec3(uint(instance), 101u, 3u)).x % uint(SPECIES)); }
 
 // The parameters: a function of the species only.
 PlPlant plant_params(int species) {
@@ -24,7 +22,7 @@ PlPlant plant_params(int species) {
                    -0.35 + 0.7 * pl_plant_unit(s, 1u),        // bend of the stem's tip along x
                    0.035 + 0.025 * pl_plant_unit(s, 2u),       // stem half-width at the base
                    0.25 + 0.2 * pl_plant_unit(s, 3u),        // leaf length
-                   2 + int(pl_plant_hash(s * 8u + 4u) % 5u)); // 2..6 leaves
+                   2 + int(pcg3d(uvec3(s, 4u, 11u)).y % 5u)); // 2..6 leaves
 }
 
 // The placement: a function of the instance (grid cell, jitter, heading).
