@@ -15,8 +15,10 @@ struct ReportEntry {
 };
 
 // Writes DIR/index.html; images referenced are copied into DIR so the page is self-contained.
-void write_report(const std::filesystem::path& dir, const std::vector<ReportEntry>& entries,
-                  const std::string& device, double total_ms);
+// Images already inside DIR are referenced where they are; others are copied under
+// DIR/<preset folder>/. A file that cannot be written is an environment error.
+Status write_report(const std::filesystem::path& dir, const std::vector<ReportEntry>& entries,
+                    const std::string& device, double total_ms);
 
 std::string html_escape(const std::string& s);
 
