@@ -64,6 +64,8 @@ int main(int argc, char** argv) {
     check_cmd->add_option("--set", set, "Param override name=value (repeatable)");
     std::string spirv_dir;
     check_cmd->add_option("--spirv", spirv_dir, "Also write every pass's SPIR-V into this folder");
+    std::string check_json;
+    check_cmd->add_option("--json", check_json, "Also write passes, images, buffers, params (with their widgets) and tests as JSON to FILE ('-': stdout, alone)");
     add_common(check_cmd);
     add_exercise(check_cmd);
 
@@ -150,7 +152,7 @@ int main(int argc, char** argv) {
 
     if (render_cmd->parsed()) return render(ro, common);
     if (test_cmd->parsed()) return test(to, common);
-    if (check_cmd->parsed()) return check(preset, set, common, spirv_dir);
+    if (check_cmd->parsed()) return check(preset, set, common, spirv_dir, check_json);
     if (list_cmd->parsed()) return list(verbose, catalogue);
     if (bench_cmd->parsed()) return bench(bo, common);
     if (run_cmd->parsed()) return run(rn, common);

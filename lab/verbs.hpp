@@ -101,7 +101,7 @@ int bench(const BenchOptions& o, const CommonOptions& c);
 int run(const RunOptions& o, const CommonOptions& c);
 int test(const TestOptions& o, const CommonOptions& c);
 int check(const std::string& preset, const std::vector<std::string>& set, const CommonOptions& c,
-          const std::string& spirv_dir = {});
+          const std::string& spirv_dir = {}, const std::string& json_file = {});
 int list(bool verbose, bool catalogue);
 int gallery(const std::string& out_dir, int width, const CommonOptions& c);
 int graph_dot(const std::string& preset, const CommonOptions& c);
