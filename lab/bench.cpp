@@ -103,10 +103,10 @@ int bench(const BenchOptions& o, const CommonOptions& c) {
     for (const auto& n : pass_order)
         std::printf("%-24s %9.3f ms %9.3f ms\n", n.c_str(), percentile(pass_ms[n], 0.5), percentile(pass_ms[n], 0.95));
     if (!o.json.empty()) {
-        nlohmann::json passes = nlohmann::json::array();
+        nlohmann::ordered_json passes = nlohmann::ordered_json::array();
         for (const auto& n : pass_order)
             passes.push_back({{"name", n}, {"gpu_ms_median", percentile(pass_ms[n], 0.5)}, {"gpu_ms_p95", percentile(pass_ms[n], 0.95)}});
-        nlohmann::json j = {{"preset", toml->string()},
+        nlohmann::ordered_json j = {{"preset", toml->string()},
                             {"width", view[0]},
                             {"height", view[1]},
                             {"frames", o.frames},

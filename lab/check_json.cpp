@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 
 namespace pl::lab {
 

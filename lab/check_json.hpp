@@ -9,7 +9,7 @@
 
 namespace pl::lab {
 
-nlohmann::json describe_graph(const exec::CompiledGraph& g);
+nlohmann::ordered_json describe_graph(const exec::CompiledGraph& g);
 
 // The panel widget of a param (lab/panel.cpp's param_widget draws exactly these).
 const char* widget_kind(const graph::ParamDesc& p);

@@ -6,7 +6,7 @@
 #include <fstream>
 
 namespace fs = std::filesystem;
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 
 namespace pl::lab {
 

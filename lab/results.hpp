@@ -25,11 +25,11 @@ struct Counts {
 };
 Counts count(const std::vector<ReportEntry>& entries);
 
-nlohmann::json to_json(const RunSummary& s);
-Result<RunSummary> run_summary_from_json(const nlohmann::json& j);
+nlohmann::ordered_json to_json(const RunSummary& s);
+Result<RunSummary> run_summary_from_json(const nlohmann::ordered_json& j);
 
 // Write FILE (folders must exist; errors are environment errors, exit 3).
-Status write_json_file(const std::filesystem::path& file, const nlohmann::json& j);
+Status write_json_file(const std::filesystem::path& file, const nlohmann::ordered_json& j);
 Status write_junit(const std::filesystem::path& file, const RunSummary& s);
 
 } // namespace pl::lab

@@ -235,7 +235,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
         // good graph keeps rendering; swap only when everything built.
         auto changed = watcher.poll(std::chrono::milliseconds(0), std::chrono::milliseconds(15));
         if (!changed.empty()) {
-            nlohmann::json files = nlohmann::json::array();
+            nlohmann::ordered_json files = nlohmann::ordered_json::array();
             for (const auto& f : changed) files.push_back(fs::proximate(f).string());
             log.write("reload-started", {{"files", files}});
             if (reload.busy()) reload.again = true;  // edited while compiling: compile once more after
@@ -334,7 +334,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
         };
         rec.overlay = [&](VkCommandBuffer cb) { (*overlay)->record(cb); };
         if (auto presented = (*window)->present(rec); !presented) return report(presented.error());
-        nlohmann::json presented = {{"frame", frame}, {"broken", st.error.has_value()}};
+        nlohmann::ordered_json presented = {{"frame", frame}, {"broken", st.error.has_value()}};
         if (first_new_frame) presented["first_after_reload"] = true;
         log.write("frame-presented", presented);
         first_new_frame = false;

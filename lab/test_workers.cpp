@@ -98,7 +98,7 @@ Result<RunSummary> run_in_workers(const std::vector<TestUnit>& units, int jobs, 
         std::ifstream in(r.json);
         std::optional<RunSummary> got;
         if (in) {
-            auto j = nlohmann::json::parse(in, nullptr, false);
+            auto j = nlohmann::ordered_json::parse(in, nullptr, false);
             if (!j.is_discarded())
                 if (auto s = run_summary_from_json(j)) got = std::move(s.value());
         }
