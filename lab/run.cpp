@@ -118,6 +118,26 @@ struct BackgroundBuild {
 
 } // namespace
 
+// Flags that would otherwise do nothing, silently: --capture without --frames never captures,
+// and --inspect of an image the graph does not have would show the output instead.
+static Status check_run_flags(const RunOptions& o, const graph::GraphDesc& d) {
+    if (!o.capture.empty() && o.frames <= 0) {
+        Error e = make_error("--capture " + o.capture + " needs --frames N: the window is captured after the last of N frames");
+        e.code = ExitCode::usage;
+        return e;
+    }
+    if (!o.capture.empty())
+        if (auto s = check_output_file(o.capture, "--capture"); !s) return s;
+    if (!o.inspect.empty() && !d.find_image(o.inspect)) {
+        Error e = make_error("--inspect " + o.inspect + ": the graph has no image '" + o.inspect + "'");
+        std::vector<std::string> names;
+        for (const auto& i : d.images) names.push_back(i.name);
+        suggest(e, o.inspect, names, "images");
+        return e;
+    }
+    return ok_status();
+}
+
 int run(const RunOptions& o, const CommonOptions& c) {
     auto lp = resolve_and_configure(o.preset, o.size, o.set, c);
     if (!lp) return report(lp.error());
@@ -129,6 +149,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
     auto built = exec::build_graph(toml, bo);
     if (!built) return report(built.error());
     describe_exercise(c, *built);
+    if (auto s = check_run_flags(o, built->desc); !s) return report(s.error());
     auto exts = init_glfw_and_list_extensions();
     if (!exts) return report(exts.error());
     vk::ContextOptions co;
@@ -340,11 +361,12 @@ int run(const RunOptions& o, const CommonOptions& c) {
         first_new_frame = false;
         ++frame;
     }
+    const bool capture_failed = (*window)->capture_failed();
     current.reset();
     overlay->reset();
     window->reset();
     glfwTerminate();
-    return 0;
+    return capture_failed ? static_cast<int>(ExitCode::environment) : 0;
 }
 
 } // namespace pl::lab
