@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
     test_cmd->add_option("-j,--jobs", to.jobs, "Presets run in N processes at once (default: the number of cores)")->check(CLI::Range(1, 256));
     test_cmd->add_option("--shard", to.shard, "Run shard K of N (1-based; also TEST_TOTAL_SHARDS / TEST_SHARD_INDEX)");
     test_cmd->add_option("--worker-json", to.worker_json, "Internal: results of a -j worker")->group("");
+    test_cmd->add_option("--worker-plan", to.worker_plan, "Internal: what a -j worker runs")->group("");
     test_cmd->add_flag("--no-validation", to.no_validation, "Do not enable the validation layer");
     test_cmd->add_flag("-v,--verbose", to.verbose, "Print every check, not only failures");
     test_cmd->add_option("--fail-dir", to.fail_dir, "Where actual/expected/diff images of failures go");

@@ -15,7 +15,11 @@ std::string html_escape(const std::string& s) {
         case '>': o += "&gt;"; break;
         case '&': o += "&amp;"; break;
         case '"': o += "&quot;"; break;
-        default: o += c;
+        case '\'': o += "&apos;"; break;
+        default:
+            // XML 1.0 allows no control character but tab and newline (JUnit files are XML).
+            if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') o += "\xEF\xBF\xBD";
+            else o += c;
         }
     }
     return o;

@@ -20,6 +20,8 @@ struct ReportEntry {
 Status write_report(const std::filesystem::path& dir, const std::vector<ReportEntry>& entries,
                     const std::string& device, double total_ms);
 
+// Text and attribute values of HTML and XML: the five entities; control characters other than
+// tab and newline become U+FFFD.
 std::string html_escape(const std::string& s);
 
 } // namespace pl::lab

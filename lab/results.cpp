@@ -34,25 +34,6 @@ json check_json(const check::CheckResult& c) {
 
 std::string str_or(const json& j, const char* k) { return j.contains(k) && j[k].is_string() ? j[k].get<std::string>() : std::string(); }
 
-// XML 1.0 text or attribute: the five entities; control characters other than tab and newline
-// are not allowed in XML at all, so they become U+FFFD.
-std::string xml_escape(const std::string& s) {
-    std::string o;
-    for (char c : s) {
-        switch (c) {
-        case '<': o += "&lt;"; break;
-        case '>': o += "&gt;"; break;
-        case '&': o += "&amp;"; break;
-        case '"': o += "&quot;"; break;
-        case '\'': o += "&apos;"; break;
-        default:
-            if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') o += "\xEF\xBF\xBD";
-            else o += c;
-        }
-    }
-    return o;
-}
-
 Status env_error(const std::string& msg) {
     Error e = make_error(msg);
     e.code = ExitCode::environment;
@@ -173,12 +154,12 @@ Status write_junit(const fs::path& file, const RunSummary& s) {
         int failures = 0, skipped = 0;
         double ms = 0;
         for (const auto* r : cases) failures += !r->passed && !r->skipped, skipped += r->skipped, ms += r->ms;
-        x += "  <testsuite name=\"" + xml_escape(where) + "\" tests=\"" + std::to_string(cases.size()) + "\" failures=\"" +
+        x += "  <testsuite name=\"" + html_escape(where) + "\" tests=\"" + std::to_string(cases.size()) + "\" failures=\"" +
              std::to_string(failures) + "\" errors=\"0\" skipped=\"" + std::to_string(skipped) + "\" time=\"" + seconds(ms) + "\">\n";
         for (const auto* r : cases) {
-            x += "    <testcase classname=\"" + xml_escape(where) + "\" name=\"" + xml_escape(r->name) + "\" time=\"" + seconds(r->ms) + "\">\n";
+            x += "    <testcase classname=\"" + html_escape(where) + "\" name=\"" + html_escape(r->name) + "\" time=\"" + seconds(r->ms) + "\">\n";
             if (r->skipped) {
-                x += "      <skipped message=\"" + xml_escape(r->skip_reason) + "\"/>\n";
+                x += "      <skipped message=\"" + html_escape(r->skip_reason) + "\"/>\n";
             } else if (!r->passed) {
                 // The message is the first reason (a failing figure); the body has all of them.
                 std::string first, body;
@@ -194,7 +175,7 @@ Status write_junit(const fs::path& file, const RunSummary& s) {
                     body += "validation: " + v + "\n";
                 }
                 if (!r->hint.empty()) body += "hint: " + r->hint + "\n";
-                x += "      <failure message=\"" + xml_escape(first) + "\" type=\"passlab\">" + xml_escape(body) + "</failure>\n";
+                x += "      <failure message=\"" + html_escape(first) + "\" type=\"passlab\">" + html_escape(body) + "</failure>\n";
             }
             // Attachments in the [[ATTACHMENT|path]] convention (Jenkins junit-attachments,
             // GitLab): absolute paths, the rendered image first.
@@ -206,7 +187,7 @@ Status write_junit(const fs::path& file, const RunSummary& s) {
             if (!files.empty()) {
                 x += "      <system-out>";
                 std::error_code ec;
-                for (const auto& f : files) x += "[[ATTACHMENT|" + xml_escape(fs::absolute(f, ec).string()) + "]]\n";
+                for (const auto& f : files) x += "[[ATTACHMENT|" + html_escape(fs::absolute(f, ec).string()) + "]]\n";
                 x += "</system-out>\n";
             }
             x += "    </testcase>\n";

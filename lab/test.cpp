@@ -18,6 +18,9 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include <csignal>
+#include <sys/prctl.h>
+
 namespace fs = std::filesystem;
 
 namespace pl::lab {
@@ -93,20 +96,27 @@ void print_summary(const RunSummary& s) {
 } // namespace
 
 int test(const TestOptions& o, const CommonOptions& c) {
+    // A -j worker ends with its parent (Ctrl-C, a CI timeout): no orphan keeps a device busy.
+    if (!o.worker_json.empty()) prctl(PR_SET_PDEATHSIG, SIGTERM);
     std::vector<std::string> args = o.targets;
     if (args.empty()) args = {exec::presets_dir().string(), (exec::presets_dir().parent_path() / "tests" / "graphs").string()};
     // Outputs are checked before anything runs: a path printed must be a file written.
     if (!o.report_dir.empty())
         if (auto s = check_output_dir(o.report_dir, "--report"); !s) return report(s.error());
-    if (auto s = check_output_dir(o.fail_dir, "--fail-dir"); !s) return report(s.error());
+    // The default fail-dir is used only when a golden fails, so a read-only cwd with passing
+    // goldens stays fine; an explicit --fail-dir must be writable up front.
+    if (o.fail_dir != TestOptions{}.fail_dir || fs::exists(o.fail_dir))
+        if (auto s = check_output_dir(o.fail_dir, "--fail-dir"); !s) return report(s.error());
     for (const auto& [file, flag] : {std::pair{o.junit, "--junit"}, std::pair{o.json, "--json"}, std::pair{o.worker_json, "--worker-json"}})
         if (!file.empty())
             if (auto s = check_output_file(file, flag); !s) return report(s.error());
 
-    auto units = collect_units(args);
+    // A -j worker runs the share its parent planned: selection and shards are already applied.
+    auto units = o.worker_plan.empty() ? collect_units(args) : read_plan(o.worker_plan);
     if (!units) return report(units.error());
     const size_t collected = selected_count(*units);
-    if (auto s = select_cases(*units, o.cases); !s) return report(s.error());
+    if (o.worker_plan.empty())
+        if (auto s = select_cases(*units, o.cases); !s) return report(s.error());
     const size_t chosen = selected_count(*units);
     if (chosen == 0) {
         // As test runners do for "no tests collected": nothing tested is not a pass.
@@ -115,7 +125,7 @@ int test(const TestOptions& o, const CommonOptions& c) {
         return static_cast<int>(ExitCode::user);
     }
     Shard shard;
-    if (o.worker_json.empty()) {
+    if (o.worker_plan.empty()) {
         auto sh = shard_from(o.shard);
         if (!sh) return report(sh.error());
         shard = *sh;
@@ -162,6 +172,15 @@ int test(const TestOptions& o, const CommonOptions& c) {
         summary.device = (*ctx)->device_description();
         if (!run_here(active, o, **ctx, ro, summary)) {
             std::printf("stopping: the GPU is still running a shader that exceeded the time limit\n");
+            if (!o.worker_json.empty()) {
+                // The parent still gets this worker's results, the runaway case among them.
+                ReportEntry hang;
+                hang.where = summary.entries.empty() ? std::string("(worker)") : summary.entries.back().where;
+                hang.result.name = "(device hung)";
+                hang.result.error = "the GPU is still running a shader that exceeded the time limit; later cases of this worker did not run\n";
+                summary.entries.push_back(hang);
+                (void)write_json_file(o.worker_json, to_json(summary));
+            }
             Counts n = count(summary.entries);
             std::printf("%d passed, %d failed\n", n.passed, n.failed + 1);
             exit_after_hang(1);

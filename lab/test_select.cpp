@@ -10,6 +10,8 @@
 #include <fnmatch.h>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 namespace fs = std::filesystem;
 
 namespace pl::lab {
@@ -37,6 +39,10 @@ fs::path output_stem(const fs::path& dir) {
     return out;
 }
 
+bool is_glob(const std::string& p) { return p.find_first_of("*?[") != std::string::npos; }
+
+} // namespace
+
 TestUnit make_unit(const fs::path& toml) {
     TestUnit u;
     u.toml = toml;
@@ -49,9 +55,37 @@ TestUnit make_unit(const fs::path& toml) {
     return u;
 }
 
-bool is_glob(const std::string& p) { return p.find_first_of("*?[") != std::string::npos; }
+Status write_plan(const fs::path& file, const std::vector<TestUnit>& units) {
+    nlohmann::ordered_json plan = nlohmann::ordered_json::array();
+    for (const auto& u : units) {
+        nlohmann::ordered_json j = {{"toml", u.toml.string()}};
+        if (u.cases) j["cases"] = std::vector<std::string>(u.cases->begin(), u.cases->end());
+        plan.push_back(j);
+    }
+    std::ofstream out(file, std::ios::trunc);
+    out << plan.dump();
+    out.close();
+    if (!out) {
+        Error e = make_error("cannot write " + file.string());
+        e.code = ExitCode::environment;
+        return e;
+    }
+    return ok_status();
+}
 
-} // namespace
+Result<std::vector<TestUnit>> read_plan(const fs::path& file) {
+    std::ifstream in(file);
+    auto plan = nlohmann::ordered_json::parse(in, nullptr, false);
+    if (plan.is_discarded() || !plan.is_array()) return make_error("malformed worker plan " + file.string());
+    std::vector<TestUnit> units;
+    for (const auto& j : plan) {
+        if (!j.contains("toml") || !j["toml"].is_string()) return make_error("malformed worker plan " + file.string());
+        TestUnit u = make_unit(j["toml"].get<std::string>());
+        if (j.contains("cases")) u.cases = j["cases"].get<std::set<std::string>>();
+        units.push_back(std::move(u));
+    }
+    return units;
+}
 
 Result<Shard> parse_shard(const std::string& s) {
     int k = 0, n = 0;

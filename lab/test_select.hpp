@@ -32,6 +32,12 @@ Result<Shard> parse_shard(const std::string& s);
 // touched to tell the engine that sharding is supported.
 Result<Shard> shard_from(const std::string& flag);
 
+// One preset, parsed for its case names.
+TestUnit make_unit(const std::filesystem::path& toml);
+// A -j worker's share: the presets and their selected cases, as a JSON file.
+Status write_plan(const std::filesystem::path& file, const std::vector<TestUnit>& units);
+Result<std::vector<TestUnit>> read_plan(const std::filesystem::path& file);
+
 // Every preset.toml under the targets (preset folders, .toml files, names, trees), parsed.
 Result<std::vector<TestUnit>> collect_units(const std::vector<std::string>& targets);
 // Applies --case (exact names or globs with * ? [..]); an exact name no preset has is a usage

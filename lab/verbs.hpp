@@ -47,6 +47,7 @@ struct TestOptions {
     int jobs = 0;            // -j N: presets in N processes at once; 0 = default_jobs()
     std::string shard;       // --shard K/N (else TEST_TOTAL_SHARDS / TEST_SHARD_INDEX)
     std::string worker_json; // internal: a -j worker writes its results here for the parent
+    std::string worker_plan; // internal: the presets and cases a -j worker runs
 };
 
 struct RunOptions {
