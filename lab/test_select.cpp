@@ -24,15 +24,15 @@ Error usage(const std::string& msg) {
     return e;
 }
 
-// A sub-path unique per preset folder: relative to the repository root when inside it (so
-// presets/aa/msaa and tests/graphs/msaa differ), else relative to the cwd, else absolute; ".."
-// components cannot climb out of the output folder.
+// A sub-path unique per preset folder: relative to the cwd when below it, as the case lines
+// print it (so presets/aa/msaa and tests/graphs/msaa differ), else relative to the repository
+// root, else the absolute path; ".." components cannot climb out of the output folder.
 fs::path output_stem(const fs::path& dir) {
     std::error_code ec;
     const fs::path d = fs::weakly_canonical(dir, ec);
-    for (const fs::path& base : {fs::weakly_canonical(exec::presets_dir().parent_path(), ec), fs::current_path(ec)}) {
+    for (const fs::path& base : {fs::current_path(ec), fs::weakly_canonical(exec::presets_dir().parent_path(), ec)}) {
         fs::path rel = d.lexically_relative(base);
-        if (!rel.empty() && *rel.begin() != "..") return rel;
+        if (!rel.empty() && rel != "." && *rel.begin() != "..") return rel;
     }
     fs::path out;
     for (const auto& part : d.relative_path()) out /= part == ".." ? fs::path("_") : part;
