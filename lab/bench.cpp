@@ -7,6 +7,8 @@
 #include "exec/executor.hpp"
 #include "vk/context.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -35,6 +37,8 @@ double peak_rss_mb() {
 } // namespace
 
 int bench(const BenchOptions& o, const CommonOptions& c) {
+    if (!o.json.empty())
+        if (auto s = check_output_file(o.json, "--json"); !s) return report(s.error());
     auto lp = resolve_and_configure(o.preset, o.size, o.set, c);
     if (!lp) return report(lp.error());
     const auto toml = &lp->toml;
@@ -99,15 +103,27 @@ int bench(const BenchOptions& o, const CommonOptions& c) {
     for (const auto& n : pass_order)
         std::printf("%-24s %9.3f ms %9.3f ms\n", n.c_str(), percentile(pass_ms[n], 0.5), percentile(pass_ms[n], 0.95));
     if (!o.json.empty()) {
-        std::ofstream j(o.json);
-        j << "{\n  \"preset\": \"" << toml->string() << "\",\n  \"width\": " << view[0] << ",\n  \"height\": " << view[1]
-          << ",\n  \"frames\": " << o.frames << ",\n  \"warmup\": " << o.warmup << ",\n  \"device\": \"" << device
-          << "\",\n  \"frame_ms\": {\"min\": " << mn << ", \"median\": " << med << ", \"p95\": " << p95
-          << "},\n  \"record_ms\": {\"median\": " << rec_med << ", \"p95\": " << rec_p95 << "},\n  \"peak_rss_mb\": " << rss << ",\n  \"passes\": [";
-        for (size_t i = 0; i < pass_order.size(); ++i)
-            j << (i ? ", " : "") << "{\"name\": \"" << pass_order[i] << "\", \"gpu_ms_median\": " << percentile(pass_ms[pass_order[i]], 0.5)
-              << ", \"gpu_ms_p95\": " << percentile(pass_ms[pass_order[i]], 0.95) << "}";
-        j << "]\n}\n";
+        nlohmann::ordered_json passes = nlohmann::ordered_json::array();
+        for (const auto& n : pass_order)
+            passes.push_back({{"name", n}, {"gpu_ms_median", percentile(pass_ms[n], 0.5)}, {"gpu_ms_p95", percentile(pass_ms[n], 0.95)}});
+        nlohmann::ordered_json j = {{"preset", toml->string()},
+                            {"width", view[0]},
+                            {"height", view[1]},
+                            {"frames", o.frames},
+                            {"warmup", o.warmup},
+                            {"device", device},
+                            {"frame_ms", {{"min", mn}, {"median", med}, {"p95", p95}}},
+                            {"record_ms", {{"median", rec_med}, {"p95", rec_p95}}},
+                            {"peak_rss_mb", rss},
+                            {"passes", passes}};
+        std::ofstream out(o.json, std::ios::trunc);
+        out << j.dump(2) << "\n";
+        out.close();
+        if (!out) {
+            Error e = make_error("bench: cannot write " + o.json);
+            e.code = ExitCode::environment;
+            return report(e);
+        }
         std::printf("json    %s\n", o.json.c_str());
     }
     return 0;

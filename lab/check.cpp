@@ -2,7 +2,10 @@
 // bind by name, plan. Needs no Vulkan device, so it runs anywhere and fast.
 #include "verbs.hpp"
 
+#include "check_json.hpp"
 #include "exec/build.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <cstdio>
@@ -12,7 +15,9 @@
 namespace pl::lab {
 
 int check(const std::string& preset, const std::vector<std::string>& set, const CommonOptions& c,
-          const std::string& spirv_dir) {
+          const std::string& spirv_dir, const std::string& json_file) {
+    if (!json_file.empty() && json_file != "-")
+        if (auto s = check_output_file(json_file, "--json"); !s) return report(s.error());
     auto t0 = std::chrono::steady_clock::now();
     auto toml = exec::resolve_preset(preset);
     if (!toml) return report(toml.error());
@@ -54,6 +59,21 @@ int check(const std::string& preset, const std::vector<std::string>& set, const 
                 out.write(reinterpret_cast<const char*>(st.words.data()), static_cast<std::streamsize>(st.words.size() * 4));
                 std::printf("%s\n", file.string().c_str());
             }
+    }
+    if (!json_file.empty()) {
+        const std::string text = describe_graph(*built).dump(2) + "\n";
+        if (json_file == "-") {
+            std::fputs(text.c_str(), stdout);
+            return 0;  // stdout is the JSON alone, for pipes
+        }
+        std::ofstream out(json_file, std::ios::trunc);
+        out << text;
+        out.close();
+        if (!out) {
+            Error e = make_error("--json " + json_file + ": cannot write");
+            e.code = ExitCode::environment;
+            return report(e);
+        }
     }
     std::printf("ok: %s: %zu pass(es), %zu image(s), %zu buffer(s), %zu file(s) read, %zu test build(s), %.1f ms\n",
                 toml->string().c_str(), built->passes.size(), built->desc.images.size(),

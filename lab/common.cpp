@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
+#include <unistd.h>
 #include <filesystem>
 #include <set>
 
@@ -93,22 +96,90 @@ Result<std::vector<std::filesystem::path>> exercise_overlay(const CommonOptions&
     return std::vector<std::filesystem::path>{std::filesystem::absolute(c.exercise)};
 }
 
-void describe_exercise(const CommonOptions& c, const exec::CompiledGraph& g) {
-    if (c.exercise.empty()) return;
+int describe_exercise(const CommonOptions& c, const exec::CompiledGraph& g) {
+    if (c.exercise.empty()) return 0;
     namespace fs = std::filesystem;
     const fs::path dir = fs::weakly_canonical(fs::absolute(c.exercise));
     std::set<fs::path> read;  // every file the build read, canonical once
     for (const auto& d : g.dependencies) read.insert(fs::weakly_canonical(d));
+    int used_count = 0;
     std::error_code ec;
     for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
         if (!it->is_regular_file()) continue;
         const fs::path f = fs::weakly_canonical(it->path());
         bool used = read.count(f) > 0;
+        used_count += used;
         const std::string rel = f.lexically_relative(dir).string();
         if (used) std::fprintf(stderr, "exercise: using your %s\n", rel.c_str());
         else if (f.extension() != ".md" && f.extension() != ".txt")
             std::fprintf(stderr, "exercise: warning: %s shadows no file the preset reads (is the name right?)\n", rel.c_str());
     }
+    return used_count;
+}
+
+std::vector<std::string> exercise_files(const std::filesystem::path& preset_toml, const exec::CompiledGraph& g) {
+    namespace fs = std::filesystem;
+    const fs::path root = preset_toml.parent_path();
+    std::vector<std::string> out;
+    std::error_code ec;
+    // The preset's own exercise/ says which files a student rewrites.
+    if (fs::is_directory(root / "exercise", ec)) {
+        for (auto it = fs::recursive_directory_iterator(root / "exercise", ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+            if (it->is_regular_file() && it->path().extension() != ".md" && it->path().extension() != ".txt")
+                out.push_back(it->path().lexically_relative(root / "exercise").string());
+    } else {
+        // Otherwise any file of the preset's folder the build read, but the TOML itself.
+        const fs::path canon_root = fs::weakly_canonical(root);
+        for (const auto& d : g.dependencies) {
+            fs::path f = fs::weakly_canonical(d);
+            fs::path rel = f.lexically_relative(canon_root);
+            if (!rel.empty() && *rel.begin() != ".." && f.filename() != "preset.toml") out.push_back(rel.string());
+        }
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+namespace {
+
+// `shown` is how the message names the output ("--junit out/r.xml").
+Status check_writable_dir(const std::string& dir, const std::string& shown) {
+    namespace fs = std::filesystem;
+    auto fail = [&](const std::string& why) {
+        Error e = make_error(shown + ": " + why);
+        e.code = ExitCode::environment;
+        return e;
+    };
+    std::error_code ec;
+    fs::path p = fs::absolute(dir, ec);
+    if (fs::exists(p, ec) && !fs::is_directory(p, ec)) return fail("exists and is not a folder");
+    // The nearest folder that exists must take a new file: probe it (a permission bit alone
+    // does not tell, e.g. /proc refuses root).
+    fs::path base = p;
+    while (!fs::exists(base, ec) && base.has_parent_path() && base.parent_path() != base) base = base.parent_path();
+    if (!fs::is_directory(base, ec)) return fail(base.string() + " is not a folder");
+    fs::path probe = base / (".passlab-write-probe-" + std::to_string(::getpid()));
+    std::FILE* f = std::fopen(probe.c_str(), "wb");
+    if (!f) return fail("cannot create files in " + base.string() + " (" + std::strerror(errno) + ")");
+    std::fclose(f);
+    fs::remove(probe, ec);
+    return ok_status();
+}
+
+} // namespace
+
+Status check_output_dir(const std::string& dir, const std::string& flag) { return check_writable_dir(dir, flag + " " + dir); }
+
+Status check_output_file(const std::string& file, const std::string& flag) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::is_directory(file, ec)) {
+        Error e = make_error(flag + " " + file + ": is a folder, not a file");
+        e.code = ExitCode::environment;
+        return e;
+    }
+    return check_writable_dir(fs::absolute(file, ec).parent_path().string(), flag + " " + file);
 }
 
 } // namespace pl::lab

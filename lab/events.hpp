@@ -3,23 +3,14 @@
 // and the reload benchmark can follow what the live lab did.
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include <chrono>
-#include <cstdio>
+#include <cmath>
 #include <fstream>
 #include <string>
 
 namespace pl::lab {
-
-inline std::string json_string(const std::string& s) {
-    std::string o = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') o += '\\', o += c;
-        else if (c == '\n') o += "\\n";
-        else if (static_cast<unsigned char>(c) < 0x20) o += ' ';
-        else o += c;
-    }
-    return o + "\"";
-}
 
 class EventLog {
   public:
@@ -27,15 +18,18 @@ class EventLog {
         if (!file.empty()) out_.open(file, std::ios::trunc);
     }
     double now_ms() const { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count(); }
-    void write(const std::string& event, const std::string& fields = "") {
+    // One line: {"event": ..., "t_ms": ..., "wall_ms": ..., <fields>}. nlohmann-json escapes
+    // every string (quotes, control characters as \uXXXX), so a GLSL message cannot break a line.
+    void write(const std::string& event, const nlohmann::ordered_json& fields = nlohmann::ordered_json::object()) {
         if (!out_) return;
-        char t[64];
         // wall_ms (Unix epoch) lets a benchmark relate events to the moment it edited a file.
         auto wall = std::chrono::duration<double, std::milli>(std::chrono::system_clock::now().time_since_epoch()).count();
-        std::snprintf(t, sizeof t, "%.1f,\"wall_ms\":%.1f", now_ms(), wall);
-        out_ << "{\"event\":\"" << event << "\",\"t_ms\":" << t << (fields.empty() ? "" : "," + fields) << "}\n";
+        nlohmann::ordered_json j = {{"event", event}, {"t_ms", tenth(now_ms())}, {"wall_ms", tenth(wall)}};
+        j.update(fields);
+        out_ << j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
         out_.flush();
     }
+    static double tenth(double ms) { return std::round(ms * 10.0) / 10.0; }
 
   private:
     std::ofstream out_;

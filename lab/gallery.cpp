@@ -19,6 +19,7 @@ namespace fs = std::filesystem;
 namespace pl::lab {
 
 int gallery(const std::string& out_dir, int width, const CommonOptions& c) {
+    if (auto s = check_output_dir(out_dir, "-o"); !s) return report(s.error());
     fs::path root = exec::presets_dir();
     std::vector<fs::path> presets;
     std::error_code ec;

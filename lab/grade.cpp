@@ -22,6 +22,7 @@ int grade(const GradeOptions& o, const CommonOptions& c) {
         e.code = ExitCode::usage;
         return report(e);
     }
+    if (auto s = check_output_dir(o.out_dir, "--out"); !s) return report(s.error());
     auto lp = resolve_and_configure(o.preset, "", {}, c);
     if (!lp) return report(lp.error());
     // Build once first: a compile error in the student's file is the first thing to fix, and
@@ -32,7 +33,15 @@ int grade(const GradeOptions& o, const CommonOptions& c) {
         std::printf("grade: your files do not build yet (see above); 0 cases graded\n");
         return static_cast<int>(ExitCode::user);
     }
-    describe_exercise(c, *built);
+    // A folder that shadows nothing would grade the reference itself and pass every case.
+    if (describe_exercise(c, *built) == 0) {
+        std::string expected;
+        for (const auto& f : exercise_files(lp->toml, *built)) expected += (expected.empty() ? "" : ", ") + f;
+        std::printf("grade: nothing graded: %s holds none of the files this exercise asks for (%s); "
+                    "copy them from the preset's exercise/ folder and keep their names\n",
+                    c.exercise.c_str(), expected.empty() ? "the preset's shaders" : expected.c_str());
+        return static_cast<int>(ExitCode::user);
+    }
     if (built->desc.tests.empty()) {
         Error e = make_error("preset " + lp->toml.string() + " has no [[test]] cases to grade against");
         return report(e);

@@ -44,7 +44,13 @@ int main(int argc, char** argv) {
     test_cmd->add_option("presets", to.targets, "Presets or folders (default: presets/ and tests/graphs/)");
     test_cmd->add_flag("--ci", to.ci, "Missing goldens fail (also when CI=true)");
     test_cmd->add_flag("--update", to.update, "Rewrite goldens");
-    test_cmd->add_option("--case", to.update_case, "With --update: only this case");
+    test_cmd->add_option("--case", to.cases, "Only this case (a name or a glob such as 'edge-*'; repeatable)");
+    test_cmd->add_option("--junit", to.junit, "Write JUnit XML (one testcase per case, images as attachments) to FILE");
+    test_cmd->add_option("--json", to.json, "Write every case and check as JSON to FILE");
+    test_cmd->add_option("-j,--jobs", to.jobs, "Presets run in N processes at once (default: the number of cores)")->check(CLI::Range(1, 256));
+    test_cmd->add_option("--shard", to.shard, "Run shard K of N (1-based; also TEST_TOTAL_SHARDS / TEST_SHARD_INDEX)");
+    test_cmd->add_option("--worker-json", to.worker_json, "Internal: results of a -j worker")->group("");
+    test_cmd->add_option("--worker-plan", to.worker_plan, "Internal: what a -j worker runs")->group("");
     test_cmd->add_flag("--no-validation", to.no_validation, "Do not enable the validation layer");
     test_cmd->add_flag("-v,--verbose", to.verbose, "Print every check, not only failures");
     test_cmd->add_option("--fail-dir", to.fail_dir, "Where actual/expected/diff images of failures go");
@@ -59,6 +65,8 @@ int main(int argc, char** argv) {
     check_cmd->add_option("--set", set, "Param override name=value (repeatable)");
     std::string spirv_dir;
     check_cmd->add_option("--spirv", spirv_dir, "Also write every pass's SPIR-V into this folder");
+    std::string check_json;
+    check_cmd->add_option("--json", check_json, "Also write passes, images, buffers, params (with their widgets) and tests as JSON to FILE ('-': stdout, alone)");
     add_common(check_cmd);
     add_exercise(check_cmd);
 
@@ -145,7 +153,7 @@ int main(int argc, char** argv) {
 
     if (render_cmd->parsed()) return render(ro, common);
     if (test_cmd->parsed()) return test(to, common);
-    if (check_cmd->parsed()) return check(preset, set, common, spirv_dir);
+    if (check_cmd->parsed()) return check(preset, set, common, spirv_dir, check_json);
     if (list_cmd->parsed()) return list(verbose, catalogue);
     if (bench_cmd->parsed()) return bench(bo, common);
     if (run_cmd->parsed()) return run(rn, common);

@@ -15,7 +15,11 @@ std::string html_escape(const std::string& s) {
         case '>': o += "&gt;"; break;
         case '&': o += "&amp;"; break;
         case '"': o += "&quot;"; break;
-        default: o += c;
+        case '\'': o += "&apos;"; break;
+        default:
+            // XML 1.0 allows no control character but tab and newline (JUnit files are XML).
+            if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') o += "\xEF\xBF\xBD";
+            else o += c;
         }
     }
     return o;
@@ -23,20 +27,32 @@ std::string html_escape(const std::string& s) {
 
 namespace {
 
-// Copies `file` into the report folder (if it is not there already) and returns its name.
-std::string local_copy(const fs::path& dir, const std::string& file, const std::string& name) {
+// The report's relative link to `file`: where it is when inside the report folder, else a copy
+// at DIR/<name> (name is unique per preset folder and case).
+std::string local_copy(const fs::path& dir, const std::string& file, const fs::path& name) {
     if (file.empty()) return {};
     std::error_code ec;
     fs::path src(file);
     if (!fs::exists(src, ec)) return {};
+    const fs::path canon_dir = fs::weakly_canonical(dir, ec), canon_src = fs::weakly_canonical(src, ec);
+    fs::path rel = canon_src.lexically_relative(canon_dir);
+    if (!rel.empty() && *rel.begin() != "..") return rel.generic_string();
     fs::path dst = dir / name;
-    if (fs::weakly_canonical(src, ec) != fs::weakly_canonical(dst, ec)) fs::copy_file(src, dst, fs::copy_options::overwrite_existing, ec);
-    return dst.filename().string();
+    fs::create_directories(dst.parent_path(), ec);
+    fs::copy_file(src, dst, fs::copy_options::overwrite_existing, ec);
+    return ec ? std::string() : name.generic_string();
+}
+
+// A folder path as a file-name-safe relative path ("presets/aa/msaa"; ".." becomes "_").
+fs::path safe_relative(const std::string& where) {
+    fs::path out;
+    for (const auto& part : fs::path(where).relative_path()) out /= part == ".." || part == "." ? fs::path("_") : part;
+    return out;
 }
 
 } // namespace
 
-void write_report(const fs::path& dir, const std::vector<ReportEntry>& entries, const std::string& device, double total_ms) {
+Status write_report(const fs::path& dir, const std::vector<ReportEntry>& entries, const std::string& device, double total_ms) {
     std::error_code ec;
     fs::create_directories(dir, ec);
     int passed = 0, failed = 0, skipped = 0;
@@ -54,7 +70,7 @@ void write_report(const fs::path& dir, const std::vector<ReportEntry>& entries, 
     h << "<table><tr><th>preset</th><th>case</th><th>result</th><th>images</th><th>checks (measured vs tolerance)</th><th>ms</th></tr>\n";
     for (const auto& e : entries) {
         const auto& r = e.result;
-        std::string id = r.preset + "." + r.name;
+        const std::string id = (safe_relative(e.where) / r.name).string();
         std::string cls = r.skipped ? "skip" : r.passed ? "pass" : "fail";
         h << "<tr><td>" << html_escape(e.where) << "</td><td>" << html_escape(r.name) << "</td><td class=\"" << cls << "\">"
           << (r.skipped ? "SKIP" : r.passed ? "PASS" : "FAIL") << "</td><td>";
@@ -76,6 +92,13 @@ void write_report(const fs::path& dir, const std::vector<ReportEntry>& entries, 
         h << "</td><td>" << static_cast<long>(r.ms) << "</td></tr>\n";
     }
     h << "</table></body></html>\n";
+    h.close();
+    if (!h) {
+        Error err = make_error("cannot write " + (dir / "index.html").string());
+        err.code = ExitCode::environment;
+        return err;
+    }
+    return ok_status();
 }
 
 } // namespace pl::lab

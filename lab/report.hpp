@@ -15,9 +15,13 @@ struct ReportEntry {
 };
 
 // Writes DIR/index.html; images referenced are copied into DIR so the page is self-contained.
-void write_report(const std::filesystem::path& dir, const std::vector<ReportEntry>& entries,
-                  const std::string& device, double total_ms);
+// Images already inside DIR are referenced where they are; others are copied under
+// DIR/<preset folder>/. A file that cannot be written is an environment error.
+Status write_report(const std::filesystem::path& dir, const std::vector<ReportEntry>& entries,
+                    const std::string& device, double total_ms);
 
+// Text and attribute values of HTML and XML: the five entities; control characters other than
+// tab and newline become U+FFFD.
 std::string html_escape(const std::string& s);
 
 } // namespace pl::lab

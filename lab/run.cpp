@@ -50,8 +50,7 @@ void warn_counter_overflow(const exec::Executor& ex, std::map<std::string, bool>
         if (c.overflow() && !was) {
             std::fprintf(stderr, "passlab: warning: buffer '%s' counted %u > capacity %llu (frame %d)\n", c.buffer.c_str(), c.count,
                          static_cast<unsigned long long>(c.capacity), c.frame);
-            log.write("counter-overflow", "\"buffer\":" + json_string(c.buffer) + ",\"count\":" + std::to_string(c.count) +
-                                              ",\"capacity\":" + std::to_string(c.capacity));
+            log.write("counter-overflow", {{"buffer", c.buffer}, {"count", c.count}, {"capacity", c.capacity}});
         }
         was = c.overflow();
     }
@@ -119,6 +118,26 @@ struct BackgroundBuild {
 
 } // namespace
 
+// Flags that would otherwise do nothing, silently: --capture without --frames never captures,
+// and --inspect of an image the graph does not have would show the output instead.
+static Status check_run_flags(const RunOptions& o, const graph::GraphDesc& d) {
+    if (!o.capture.empty() && o.frames <= 0) {
+        Error e = make_error("--capture " + o.capture + " needs --frames N: the window is captured after the last of N frames");
+        e.code = ExitCode::usage;
+        return e;
+    }
+    if (!o.capture.empty())
+        if (auto s = check_output_file(o.capture, "--capture"); !s) return s;
+    if (!o.inspect.empty() && !d.find_image(o.inspect)) {
+        Error e = make_error("--inspect " + o.inspect + ": the graph has no image '" + o.inspect + "'");
+        std::vector<std::string> names;
+        for (const auto& i : d.images) names.push_back(i.name);
+        suggest(e, o.inspect, names, "images");
+        return e;
+    }
+    return ok_status();
+}
+
 int run(const RunOptions& o, const CommonOptions& c) {
     auto lp = resolve_and_configure(o.preset, o.size, o.set, c);
     if (!lp) return report(lp.error());
@@ -130,6 +149,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
     auto built = exec::build_graph(toml, bo);
     if (!built) return report(built.error());
     describe_exercise(c, *built);
+    if (auto s = check_run_flags(o, built->desc); !s) return report(s.error());
     auto exts = init_glfw_and_list_extensions();
     if (!exts) return report(exts.error());
     vk::ContextOptions co;
@@ -176,7 +196,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
     st.viewer_image = o.inspect;
     const fs::path sidecar = exec::sidecar_path(toml);
     int from_sidecar = o.sidecar ? apply_sidecar(st, *current, sidecar, o.set) : 0;
-    log.write("started", "\"preset\":" + json_string(toml.string()) + ",\"sidecar_values\":" + std::to_string(from_sidecar));
+    log.write("started", {{"preset", toml.string()}, {"sidecar_values", from_sidecar}});
 
     auto last = std::chrono::steady_clock::now();
     graph::OrbitCamera camera = current->graph().desc.view.orbit;
@@ -227,7 +247,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
         if (pending_size[0] > 0 && now >= resize_at && !reload.busy()) {
             built_size = pending_size;
             bo.size = pending_size;
-            log.write("resize", "\"size\":[" + std::to_string(pending_size[0]) + "," + std::to_string(pending_size[1]) + "]");
+            log.write("resize", {{"size", {pending_size[0], pending_size[1]}}});
             reload.start(toml, bo, log.now_ms());
             pending_size = {0, 0};
         }
@@ -236,9 +256,9 @@ int run(const RunOptions& o, const CommonOptions& c) {
         // good graph keeps rendering; swap only when everything built.
         auto changed = watcher.poll(std::chrono::milliseconds(0), std::chrono::milliseconds(15));
         if (!changed.empty()) {
-            std::string files;
-            for (const auto& f : changed) files += (files.empty() ? "" : ",") + json_string(fs::proximate(f).string());
-            log.write("reload-started", "\"files\":[" + files + "]");
+            nlohmann::ordered_json files = nlohmann::ordered_json::array();
+            for (const auto& f : changed) files.push_back(fs::proximate(f).string());
+            log.write("reload-started", {{"files", files}});
             if (reload.busy()) reload.again = true;  // edited while compiling: compile once more after
             else reload.start(toml, bo, log.now_ms());
         }
@@ -260,9 +280,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
                     const Error& e = next_ex.error();
                     std::fputs(e.format().c_str(), stderr);
                     std::fprintf(stderr, "passlab: keeping the last good frame\n");
-                    log.write("reload-failed", "\"file\":" + json_string(e.loc.file) + ",\"line\":" + std::to_string(e.loc.line) +
-                                                   ",\"col\":" + std::to_string(e.loc.col) + ",\"pass\":" + json_string(e.pass) +
-                                                   ",\"message\":" + json_string(e.message));
+                    log.write("reload-failed", {{"file", e.loc.file}, {"line", e.loc.line}, {"col", e.loc.col}, {"pass", e.pass}, {"message", e.message}});
                     (*window)->set_title(title + " — ERROR " + e.loc.str() + ": " + e.message);
                     st.error = e;
                     if ((*ctx)->hung()) exit_after_hang(1);
@@ -275,16 +293,12 @@ int run(const RunOptions& o, const CommonOptions& c) {
                     base_params = current->params();
                     reapply_touched(st, *current);
                     watcher.watch(current->graph().dependencies);
-                    auto names = [](const std::vector<std::string>& v) {
-                        std::string o;
-                        for (const auto& n : v) o += (o.empty() ? "" : ",") + json_string(n);
-                        return o;
-                    };
                     std::vector<std::string> all;
                     for (const auto& p : current->graph().passes) all.push_back(p.desc->name);
-                    char ms[96];
-                    std::snprintf(ms, sizeof ms, "\"ms\":%.1f,\"compile_ms\":%.1f", log.now_ms() - reload.t0, t_compiled - reload.t0);
-                    log.write("reload-ok", "\"passes\":[" + names(all) + "],\"rebuilt\":[" + names(current->rebuilt_passes()) + "]," + ms);
+                    log.write("reload-ok", {{"passes", all},
+                                            {"rebuilt", current->rebuilt_passes()},
+                                            {"ms", EventLog::tenth(log.now_ms() - reload.t0)},
+                                            {"compile_ms", EventLog::tenth(t_compiled - reload.t0)}});
                     std::fprintf(stderr, "passlab: reloaded in %.1f ms (%zu of %zu pipelines rebuilt)\n", log.now_ms() - reload.t0,
                                  current->rebuilt_passes().size(), all.size());
                     if (st.error) (*window)->set_title(title);
@@ -341,16 +355,18 @@ int run(const RunOptions& o, const CommonOptions& c) {
         };
         rec.overlay = [&](VkCommandBuffer cb) { (*overlay)->record(cb); };
         if (auto presented = (*window)->present(rec); !presented) return report(presented.error());
-        log.write("frame-presented", "\"frame\":" + std::to_string(frame) + ",\"broken\":" + (st.error ? "true" : "false") +
-                                         (first_new_frame ? ",\"first_after_reload\":true" : ""));
+        nlohmann::ordered_json presented = {{"frame", frame}, {"broken", st.error.has_value()}};
+        if (first_new_frame) presented["first_after_reload"] = true;
+        log.write("frame-presented", presented);
         first_new_frame = false;
         ++frame;
     }
+    const bool capture_failed = (*window)->capture_failed();
     current.reset();
     overlay->reset();
     window->reset();
     glfwTerminate();
-    return 0;
+    return capture_failed ? static_cast<int>(ExitCode::environment) : 0;
 }
 
 } // namespace pl::lab

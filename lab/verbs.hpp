@@ -36,12 +36,18 @@ struct RenderOptions {
 struct TestOptions {
     std::vector<std::string> targets;  // presets or folders; default presets/ and tests/graphs/
     bool ci = false;                   // --ci (also CI=true): missing goldens fail
-    bool update = false;               // --update: rewrite goldens
-    std::string update_case;           // --case NAME: only this case when updating
+    bool update = false;               // --update: rewrite goldens (of the selected cases)
+    std::vector<std::string> cases;    // --case NAME|GLOB (repeatable): only these cases run
     bool no_validation = false;
     bool verbose = false;
     std::string fail_dir = "test-failures";
     std::string report_dir;  // --report DIR: static HTML with every case
+    std::string junit;       // --junit FILE: JUnit XML
+    std::string json;        // --json FILE: every case and check as JSON
+    int jobs = 0;            // -j N: presets in N processes at once; 0 = default_jobs()
+    std::string shard;       // --shard K/N (else TEST_TOTAL_SHARDS / TEST_SHARD_INDEX)
+    std::string worker_json; // internal: a -j worker writes its results here for the parent
+    std::string worker_plan; // internal: the presets and cases a -j worker runs
 };
 
 struct RunOptions {
@@ -96,7 +102,7 @@ int bench(const BenchOptions& o, const CommonOptions& c);
 int run(const RunOptions& o, const CommonOptions& c);
 int test(const TestOptions& o, const CommonOptions& c);
 int check(const std::string& preset, const std::vector<std::string>& set, const CommonOptions& c,
-          const std::string& spirv_dir = {});
+          const std::string& spirv_dir = {}, const std::string& json_file = {});
 int list(bool verbose, bool catalogue);
 int gallery(const std::string& out_dir, int width, const CommonOptions& c);
 int graph_dot(const std::string& preset, const CommonOptions& c);
@@ -123,6 +129,15 @@ Result<std::vector<std::filesystem::path>> collect_presets(const std::string& ar
 Result<std::vector<std::filesystem::path>> exercise_overlay(const CommonOptions& c);
 // Prints which files of the exercise folder shadow the preset's, and warns about those that
 // shadow nothing the preset reads (a misspelt name would otherwise be silently ignored).
-void describe_exercise(const CommonOptions& c, const exec::CompiledGraph& g);
+// Returns how many files of the folder the build used.
+int describe_exercise(const CommonOptions& c, const exec::CompiledGraph& g);
+// The files an exercise of this preset is expected to hold (relative names): those of the
+// preset's own exercise/ folder, else the files of the preset's folder the build read.
+std::vector<std::string> exercise_files(const std::filesystem::path& preset_toml, const exec::CompiledGraph& g);
+
+// Output paths are checked before any work: an unwritable --report/--fail-dir/--out/-o (or one
+// that names a file) is an environment error (exit 3), never a path printed but not written.
+Status check_output_dir(const std::string& dir, const std::string& flag);
+Status check_output_file(const std::string& file, const std::string& flag);
 
 } // namespace pl::lab

@@ -244,7 +244,7 @@ void Window::save_capture() {
         img.pixels[i * 4 + 3] = 1.0f;
     }
     if (auto s = image::save_image(img, capture_file_); s) std::fprintf(stderr, "passlab: window captured to %s\n", capture_file_.c_str());
-    else std::fprintf(stderr, "passlab: window capture failed: %s\n", s.error().message.c_str());
+    else std::fprintf(stderr, "passlab: window capture failed: %s\n", s.error().message.c_str()), capture_failed_ = true;
     capture_file_.clear();
     capture_buffer_ = {};
 }

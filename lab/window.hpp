@@ -58,6 +58,7 @@ class Window {
     void set_title(const std::string& t);
     // Saves the next presented frame, overlay included, as a PNG (UI screenshots, tests).
     void capture_next(const std::string& png) { capture_file_ = png; }
+    bool capture_failed() const { return capture_failed_; }  // a --capture that was not written
     // The input since the last call (motion, wheel and key presses are consumed).
     WindowInput take_input();
     WindowInput& input() { return input_; }
@@ -85,6 +86,7 @@ class Window {
     vk::UniqueFence fence_;
     WindowInput input_;
     std::string capture_file_;
+    bool capture_failed_ = false;
     vk::Buffer capture_buffer_;
 };
 

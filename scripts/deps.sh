@@ -13,6 +13,7 @@ PACKAGES=(
   libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
+  graphviz
 )
 
 missing=()

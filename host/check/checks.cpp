@@ -201,6 +201,11 @@ std::optional<CheckResult> render_property(vk::Context& ctx, const fs::path& tom
 
 } // namespace
 
+fs::path case_stem(const RunOptions& opt, const fs::path& toml, const std::string& name) {
+    if (opt.output_stem.empty()) return toml.parent_path().filename().string() + "." + name;
+    return opt.output_stem / name;
+}
+
 std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml, const RunOptions& opt) {
     std::vector<CaseResult> out;
     exec::BuildOptions base;
@@ -220,6 +225,7 @@ std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml,
     }
     const graph::GraphDesc& desc = probe_build->desc;
     for (const auto& t : desc.tests) {
+        if (opt.cases && !opt.cases->count(t.name)) continue;
         if (ctx.hung()) break;  // a runaway shader still occupies the device
         auto t0 = std::chrono::steady_clock::now();
         CaseResult cr;
@@ -245,12 +251,14 @@ std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml,
             if (!img) {
                 cr.error = img.error().format();
             } else {
-                std::string case_id = preset + "." + t.name;
+                const fs::path case_id = case_stem(opt, toml, t.name);
                 if (!opt.report_dir.empty()) {
+                    fs::path f = opt.report_dir / case_id;
+                    f += ".png";
                     std::error_code ec;
-                    fs::create_directories(opt.report_dir, ec);
-                    fs::path f = opt.report_dir / (case_id + ".png");
-                    if (image::save_image(**img, f)) cr.image_file = f.string();
+                    fs::create_directories(f.parent_path(), ec);
+                    if (auto s = image::save_image(**img, f); s) cr.image_file = f.string();
+                    else cr.error += "cannot write " + f.string() + ": " + s.error().message + "\n";
                 }
                 if (!t.golden.empty())
                     cr.checks.push_back(compare_golden(**img, t, toml.parent_path(), opt, case_id));

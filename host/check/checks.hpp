@@ -9,6 +9,8 @@
 #include "vk/context.hpp"
 
 #include <filesystem>
+#include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,8 @@ struct CheckResult {
     bool passed = false;
     std::string detail; // measured values vs tolerance
     std::string expected_file, actual_file, diff_file;  // goldens, for reports
+    // A golden written by this run (missing and written locally, or --update): always reported.
+    enum class GoldenWrite { none, written, rewritten } golden_write = GoldenWrite::none;
 };
 
 struct CaseResult {
@@ -37,13 +41,20 @@ struct CaseResult {
 struct RunOptions {
     bool ci = false;         // missing golden fails instead of being written
     bool update = false;     // rewrite goldens
-    std::string update_only; // with update: only this case name
     std::filesystem::path cache_dir;
     std::filesystem::path fail_dir;  // where actual/expected/diff images of failures go
     std::filesystem::path report_dir;  // when set, every case's image is written there too
     // Folders whose files shadow the preset's own (a student's exercise copy; see BuildOptions).
     std::vector<std::filesystem::path> overlay_dirs;
+    // When set, only these cases run (the others are not reported): `--case`, sharding.
+    std::optional<std::set<std::string>> cases;
+    // Relative path under fail_dir/report_dir for this preset's images, unique per preset
+    // (e.g. "presets/aa/msaa"); empty: the folder's basename as a prefix of the file name.
+    std::filesystem::path output_stem;
 };
+
+// The output file stem (without extension) of a case: "<output_stem>/<case>" or "<basename>.<case>".
+std::filesystem::path case_stem(const RunOptions& opt, const std::filesystem::path& preset_toml, const std::string& name);
 
 // Runs every [[test]] of one preset on `ctx`.
 std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const std::filesystem::path& preset_toml,

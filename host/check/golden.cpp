@@ -8,13 +8,13 @@ namespace fs = std::filesystem;
 namespace pl::check {
 
 CheckResult compare_golden(const image::Image& img, const graph::TestDesc& t, const fs::path& dir, const RunOptions& opt,
-                           const std::string& case_id) {
+                           const fs::path& case_id) {
     CheckResult r;
     fs::path file = dir / t.golden;
     r.what = "golden " + t.golden;
     std::error_code ec;
     bool exists = fs::exists(file, ec);
-    bool update = opt.update && (opt.update_only.empty() || opt.update_only == t.name);
+    bool update = opt.update;  // --case selects which cases run, so which goldens --update rewrites
     auto tol = [&](const char* k, double def) {
         auto it = t.tolerance.find(k);
         return it == t.tolerance.end() ? def : it->second;
@@ -36,6 +36,7 @@ CheckResult compare_golden(const image::Image& img, const graph::TestDesc& t, co
             return r;
         }
         r.passed = true;
+        r.golden_write = exists ? CheckResult::GoldenWrite::rewritten : CheckResult::GoldenWrite::written;
         if (previous && previous->width == img.width && previous->height == img.height) {
             image::DiffStats d = image::diff(img, *previous, static_cast<float>(tol("bad_threshold", 0.02)));
             r.detail = "golden rewritten; changed by rmse " + fmt(d.rmse) + ", max " + fmt(d.max_abs) +
@@ -72,14 +73,26 @@ CheckResult compare_golden(const image::Image& img, const graph::TestDesc& t, co
         r.detail += ", ssim " + fmt(s) + " (≥ " + fmt(min_ssim) + ")";
     }
     if ((!r.passed || !opt.report_dir.empty()) && !opt.fail_dir.empty()) {
-        fs::path out = r.passed ? opt.report_dir : opt.fail_dir;
-        fs::create_directories(out, ec);
-        std::string ext = file.extension().string();
-        r.actual_file = (out / (case_id + ".actual" + ext)).string();
-        r.diff_file = (out / (case_id + ".diff.png")).string();
-        (void)image::save_image(img, r.actual_file);
-        (void)image::save_image(image::diff_heatmap(img, expected), r.diff_file);
-        if (!r.passed) r.detail += "; actual and diff in " + out.string();
+        const fs::path out = r.passed ? opt.report_dir : opt.fail_dir;
+        const fs::path stem = out / case_id;
+        fs::create_directories(stem.parent_path(), ec);
+        const std::string ext = file.extension().string();
+        auto named = [&](const std::string& suffix) { return stem.string() + suffix; };
+        // actual, expected (a copy of the golden, so the folder alone tells the story) and diff.
+        std::string why;
+        if (auto s = image::save_image(img, named(".actual" + ext)); s) r.actual_file = named(".actual" + ext);
+        else why = s.error().message;
+        fs::copy_file(file, named(".expected" + ext), fs::copy_options::overwrite_existing, ec);
+        if (!ec) r.expected_file = named(".expected" + ext);
+        else why = "cannot copy the golden to " + named(".expected" + ext) + ": " + ec.message();
+        if (auto s = image::save_image(image::diff_heatmap(img, expected), named(".diff.png")); s) r.diff_file = named(".diff.png");
+        else why = s.error().message;
+        if (!why.empty()) {
+            r.passed = false;
+            r.detail += "; cannot write the images into " + out.string() + ": " + why;
+        } else if (!r.passed) {
+            r.detail += "; actual, expected and diff in " + stem.parent_path().string();
+        }
     }
     return r;
 }

@@ -8,6 +8,6 @@
 namespace pl::check {
 
 CheckResult compare_golden(const image::Image& img, const graph::TestDesc& t, const std::filesystem::path& preset_dir,
-                           const RunOptions& opt, const std::string& case_id);
+                           const RunOptions& opt, const std::filesystem::path& case_id);
 
 } // namespace pl::check

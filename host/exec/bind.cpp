@@ -135,6 +135,14 @@ Status bind_pass(const graph::GraphDesc& desc, CompiledPass& cp) {
         if (is_buffer && !desc.find_buffer(name) && !b.block_name.empty() && desc.find_buffer(b.block_name))
             name = b.block_name;
 
+        // One graph resource per binding: `uniform sampler2D x[2]` or a `buffer B { } b[2]` would
+        // need N resources bound to one name, which the graph cannot say; refuse it here, at the
+        // declaration, so `passlab check` catches it (not the first frame, at the pass's line).
+        if (b.count != 1)
+            return err("'" + b.name + "' is an array of " + (b.count ? std::to_string(b.count) : std::string("unsized")) +
+                           " resources; arrays of samplers, images or buffers are not supported: declare one per graph "
+                           "resource (" + (is_buffer ? std::string("one buffer block per buffer") : "e.g. `uniform sampler2D " + b.name + "0, " + b.name + "1;`") + ")",
+                       name, &b);
         if (b.type == BindingType::sampler) return err("separate 'sampler' objects are not supported; declare a combined sampler (sampler2D ...) named after the image", name);
 
         // History: <name>_prev reads last frame's contents of a history image or buffer.

@@ -31,11 +31,22 @@ Result<fs::path> resolve_preset(const std::string& arg) {
         e.code = ExitCode::user;
         return e;
     }
-    if (fs::is_regular_file(p, ec)) return fs::absolute(p).lexically_normal();
+    if (fs::is_regular_file(p, ec)) {
+        // A shader where a preset is expected would otherwise be reported as invalid TOML.
+        static const std::vector<std::string> shader_ext = {".frag", ".glsl", ".vert", ".comp", ".geom", ".tesc", ".tese", ".fs", ".vs"};
+        if (std::find(shader_ext.begin(), shader_ext.end(), p.extension().string()) != shader_ext.end()) {
+            Error e = make_error("'" + arg + "' looks like a shader file; a preset is a folder with preset.toml (to run a Shadertoy shader use passlab import)");
+            e.code = ExitCode::usage;
+            if (fs::exists(p.parent_path() / "preset.toml", ec))
+                e.hint = "did you mean the preset that holds it, '" + (p.parent_path().empty() ? std::string(".") : p.parent_path().string()) + "'?";
+            return e;
+        }
+        return fs::absolute(p).lexically_normal();
+    }
     // A name: family/name or name, under presets/.
     fs::path root = presets_dir();
     if (fs::exists(root / arg / "preset.toml", ec)) return root / arg / "preset.toml";
-    std::vector<std::string> names;
+    std::vector<std::string> names, bare;  // family/name, and name alone (what is typed most)
     if (fs::is_directory(root, ec)) {
         for (const auto& fam : fs::directory_iterator(root, ec)) {
             if (!fam.is_directory()) continue;
@@ -44,12 +55,19 @@ Result<fs::path> resolve_preset(const std::string& arg) {
                 std::string full = fam.path().filename().string() + "/" + pre.path().filename().string();
                 if (pre.path().filename() == arg) return pre.path() / "preset.toml";
                 names.push_back(full);
+                bare.push_back(pre.path().filename().string());
             }
         }
     }
     Error e = make_error("no preset '" + arg + "': not a folder with preset.toml, a .toml file, or "
                          "a preset name");
     std::string near = nearest_name(arg, names);
+    if (near.empty()) {
+        // "fbmm" is far from "procedural/fbm" but near "fbm": compare the last part alone.
+        const std::string last = fs::path(arg).filename().string();
+        std::string b = nearest_name(last, bare);
+        if (!b.empty()) near = names[static_cast<size_t>(std::find(bare.begin(), bare.end(), b) - bare.begin())];
+    }
     if (!near.empty()) e.hint = "did you mean '" + near + "'?";
     e.notes.push_back("`passlab list` shows the presets");
     return e;

@@ -2,9 +2,14 @@
 // check/ evaluates them.
 #include "graph/parse_parts.hpp"
 
+#include <algorithm>
+
 namespace pl::graph {
 
 namespace {
+
+// The keys of a [[test]]'s `tolerance` table: bounds on the golden comparison (docs/format.md).
+const std::vector<std::string> kGoldenTolerances = {"rmse", "max_bad_fraction", "bad_threshold", "max_abs", "ssim"};
 
 // cameras = { sun = { eye = [...] } }: each names a camera of [cameras]; its keys are read over
 // a copy of that camera, so what is absent keeps the graph's values.
@@ -79,13 +84,27 @@ Status parse_test_body(const toml::table& t, const std::string& file, GraphDesc&
     if (auto s = r.str("golden", d.golden); !s) return s;
     auto tol = r.table("tolerance", "a table { rmse = number, ... }");
     if (!tol) return tol.error();
-    if (*tol)
+    if (*tol) {
+        // The golden's tolerances (check/golden.cpp reads exactly these): an unknown key would
+        // silently leave the default in force, so it is an error with a suggestion.
+        TableReader tr(**tol, file, r.what() + " tolerance");
         for (auto&& [k, v] : **tol) {
-            if (!v.is_number()) return r.error(r.what() + ": tolerance." + std::string(k.str()) + " must be a number, not " + type_name(v), r.loc_of(v));
+            const std::string key(k.str());
+            if (std::find(kGoldenTolerances.begin(), kGoldenTolerances.end(), key) == kGoldenTolerances.end()) {
+                Error e = r.error(r.what() + ": unknown golden tolerance '" + key + "'", tr.key_loc(key));
+                suggest(e, key, kGoldenTolerances, "golden tolerances");
+                if (key == "tol") e.notes.push_back("`tol` belongs to a probe or check in checks = [...]; a golden's bound is rmse, max_abs, ...");
+                return e;
+            }
+            if (!v.is_number()) return r.error(r.what() + ": tolerance." + key + " must be a number, not " + type_name(v), r.loc_of(v));
             double x = *v.value<double>();
-            if (x < 0) return r.error(r.what() + ": tolerance." + std::string(k.str()) + " must be >= 0", r.loc_of(v));
-            d.tolerance[std::string(k.str())] = x;
+            if (x < 0) return r.error(r.what() + ": tolerance." + key + " must be >= 0", r.loc_of(v));
+            d.tolerance[key] = x;
         }
+    }
+    if (!d.tolerance.empty() && d.golden.empty())
+        return r.error(r.what() + ": tolerance = { ... } bounds the golden image's difference; add golden = \"FILE.png\" (checks have their own tol)",
+                       r.key_loc("tolerance"));
     // probes = [...] and checks = [...]: arrays of inline tables.
     for (const char* key : {"probes", "checks"}) {
         const toml::node* n = r.get(key);

@@ -27,8 +27,15 @@ grep -q "grade: 4 of 4 cases pass" "$work/g2.txt" || fail "the reference copy: w
 
 # 3. A misspelt file name shadows nothing: a warning, not silence.
 mkdir "$work/typo"; cp "$preset/lambert.frag" "$work/typo/lambret.frag"
-"$passlab" grade shading/lambert --exercise "$work/typo" --out "$work/out3" > "$work/g3.txt" 2> "$work/g3.err" || true
+# It shadows nothing, so nothing is graded (it would grade the reference): exit 1, naming the
+# files the exercise asks for. An empty folder too.
+rc=0; "$passlab" grade shading/lambert --exercise "$work/typo" --out "$work/out3" > "$work/g3.txt" 2> "$work/g3.err" || rc=$?
 grep -q "warning: lambret.frag shadows no file the preset reads" "$work/g3.err" || fail "no warning for a misspelt file"
+[ "$rc" = 1 ] || fail "a folder shadowing nothing: exit $rc, expected 1"
+grep -q "grade: nothing graded: .* holds none of the files this exercise asks for (lambert.frag)" "$work/g3.txt" || fail "no 'nothing graded': $(cat "$work/g3.txt")"
+mkdir "$work/empty"
+rc=0; "$passlab" grade shading/lambert --exercise "$work/empty" --out "$work/out3" > "$work/g3b.txt" 2>&1 || rc=$?
+[ "$rc" = 1 ] && grep -q "nothing graded" "$work/g3b.txt" || fail "an empty exercise folder: exit $rc: $(cat "$work/g3b.txt")"
 
 # 4. A compile error in the student's copy is reported at its file:line:col.
 mkdir "$work/broken"; sed 's/vec3 lo = vec3(0.0);/vec3 lo = vec3(0.0)/' "$preset/exercise/lambert.frag" > "$work/broken/lambert.frag"
