@@ -5,7 +5,8 @@
 #include "check/checks.hpp"
 #include "report.hpp"
 #include "exec/build.hpp"
-#include "vk/context.hpp"
+#include "shader/include.hpp"
+#include "vk/context_slot.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -16,7 +17,6 @@
 namespace fs = std::filesystem;
 
 namespace pl::lab {
-
 
 int test(const TestOptions& o, const CommonOptions& c) {
     std::vector<std::string> args = o.targets;
@@ -32,7 +32,8 @@ int test(const TestOptions& o, const CommonOptions& c) {
     // Tests always run under the validation layer when it is installed (--no-validation to skip).
     co.validation = !o.no_validation;
     co.device = c.device;
-    auto ctx = vk::Context::create(co);
+    vk::ContextSlot slot(co);
+    auto ctx = slot.get();
     if (!ctx) return report(ctx.error());
     if (!(*ctx)->validation_enabled() && !o.no_validation)
         std::fprintf(stderr, "test: the Khronos validation layer is not installed; running without it\n");
@@ -45,6 +46,7 @@ int test(const TestOptions& o, const CommonOptions& c) {
     ro.cache_dir = cache_dir(c);
     ro.fail_dir = o.fail_dir;
     ro.report_dir = o.report_dir;
+    ro.timeout = timeout(c);
     auto overlay = exercise_overlay(c);
     if (!overlay) return report(overlay.error());
     ro.overlay_dirs = *overlay;
@@ -55,8 +57,8 @@ int test(const TestOptions& o, const CommonOptions& c) {
 
     int passed = 0, failed = 0, skipped = 0;
     for (const auto& p : presets) {
-        auto results = check::run_preset_tests(**ctx, p, ro);
-        std::string where = fs::proximate(p.parent_path()).string();
+        auto results = check::run_preset_tests(slot, p, ro);
+        std::string where = shader::display_path(p.parent_path());
         for (const auto& r : results) entries.push_back({where, r});
         for (const auto& r : results) {
             if (r.skipped) {
@@ -72,11 +74,6 @@ int test(const TestOptions& o, const CommonOptions& c) {
                     std::printf("    %s %s: %s\n", ch.passed ? "ok  " : "FAIL", ch.what.c_str(), ch.detail.c_str());
             for (const auto& v : r.validation) std::printf("    validation: %s\n", v.c_str());
         }
-        if ((*ctx)->hung()) {
-            std::printf("stopping: the GPU is still running a shader that exceeded the time limit\n");
-            std::printf("%d passed, %d failed\n", passed, failed + 1);
-            exit_after_hang(1);
-        }
     }
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (!o.report_dir.empty()) {
@@ -86,6 +83,7 @@ int test(const TestOptions& o, const CommonOptions& c) {
     std::printf("%d passed, %d failed", passed, failed);
     if (skipped) std::printf(", %d skipped", skipped);
     std::printf(" (%s)\n", (*ctx)->device_description().c_str());
+    if (slot.any_hung()) exit_after_hang(failed ? 1 : 0);
     return failed ? 1 : 0;
 }
 

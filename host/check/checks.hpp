@@ -6,8 +6,9 @@
 #include "exec/build.hpp"
 #include "exec/executor.hpp"
 #include "graph/desc.hpp"
-#include "vk/context.hpp"
+#include "vk/context_slot.hpp"
 
+#include <chrono>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -43,10 +44,13 @@ struct RunOptions {
     std::filesystem::path report_dir;  // when set, every case's image is written there too
     // Folders whose files shadow the preset's own (a student's exercise copy; see BuildOptions).
     std::vector<std::filesystem::path> overlay_dirs;
+    std::chrono::milliseconds timeout{std::chrono::seconds(20)};  // GPU watchdog per frame (--timeout)
 };
 
-// Runs every [[test]] of one preset on `ctx`.
-std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const std::filesystem::path& preset_toml,
+// Runs every [[test]] of one preset on the slot's device. A case whose frame exceeds the
+// watchdog fails with the runaway passes named; the device it hung is abandoned and the
+// remaining cases run on a fresh one.
+std::vector<CaseResult> run_preset_tests(vk::ContextSlot& slot, const std::filesystem::path& preset_toml,
                                          const RunOptions& opt);
 
 } // namespace pl::check
