@@ -53,7 +53,7 @@ int bench(const BenchOptions& o, const CommonOptions& c) {
     auto view = built->view;
     auto ex = exec::Executor::create(**ctx, std::move(built.value()));
     if (!ex) return report(ex.error());
-    (*ex)->set_timeout(std::chrono::milliseconds(static_cast<long long>(c.timeout_s * 1000)));
+    (*ex)->set_timeout(timeout(c));
 
     std::vector<double> frame_ms, record_ms;
     std::map<std::string, std::vector<double>> pass_ms;

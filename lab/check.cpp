@@ -4,6 +4,7 @@
 
 #include "check_json.hpp"
 #include "exec/build.hpp"
+#include "scene/mesh.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -47,16 +48,38 @@ int check(const std::string& preset, const std::vector<std::string>& set, const 
         }
         ++test_builds;
     }
+    // Mesh files are read by the executor, on the GPU path; read them here too, so that a
+    // broken or hostile mesh (a device file, a face of 200,000 corners) is refused by `check`.
+    for (const auto& md : built->desc.meshes) {
+        if (md.file.empty()) continue;
+        if (auto m = scene::load_mesh(built->desc.dir / md.file); !m) {
+            Error e = m.error();
+            if (!e.loc.known()) e.loc = md.loc;
+            e.resource = md.name;
+            return report(e);
+        }
+    }
     describe_exercise(c, *built);
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (!spirv_dir.empty()) {
         // <pass>.<stage>.spv, exactly what the executor would hand to the driver.
-        std::filesystem::create_directories(spirv_dir);
+        std::error_code ec;
+        std::filesystem::create_directories(spirv_dir, ec);
+        if (ec || !std::filesystem::is_directory(spirv_dir, ec)) {
+            Error e = make_error("--spirv " + spirv_dir + ": cannot create that folder" + (ec ? ": " + ec.message() : " (a file of that name exists)"));
+            e.code = ExitCode::environment;
+            return report(e);
+        }
         for (const auto& p : built->passes)
             for (const auto& st : p.program.stages) {
                 auto file = std::filesystem::path(spirv_dir) / (p.desc->name + "." + shader::stage_name(st.stage) + ".spv");
                 std::ofstream out(file, std::ios::binary);
                 out.write(reinterpret_cast<const char*>(st.words.data()), static_cast<std::streamsize>(st.words.size() * 4));
+                if (!out) {
+                    Error e = make_error("--spirv: cannot write '" + file.string() + "'");
+                    e.code = ExitCode::environment;
+                    return report(e);
+                }
                 std::printf("%s\n", file.string().c_str());
             }
     }

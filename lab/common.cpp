@@ -1,5 +1,9 @@
 #include "verbs.hpp"
 
+#include "util/files.hpp"
+#include "util/paths.hpp"
+#include "util/scan.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <cerrno>
@@ -22,6 +26,10 @@ void exit_after_hang(int code) {
     std::_Exit(code);
 }
 
+std::chrono::milliseconds timeout(const CommonOptions& c) {
+    return std::chrono::milliseconds(static_cast<long long>(c.timeout_s * 1000));
+}
+
 std::string cache_dir(const CommonOptions& c) {
     if (c.no_cache) return {};
     if (const char* x = std::getenv("PASSLAB_CACHE_DIR")) return x;
@@ -34,20 +42,27 @@ std::string cache_dir(const CommonOptions& c) {
 
 Result<std::optional<std::array<int, 2>>> parse_size(const std::string& s) {
     if (s.empty()) return std::optional<std::array<int, 2>>{};
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X')) {
+    // Checked digits (sscanf's %d wrapped 4294967297 to 1): a number too large for any type
+    // becomes one the range check below refuses.
+    auto dim = [](std::string_view d) -> std::optional<unsigned long long> {
+        if (d.empty() || !std::all_of(d.begin(), d.end(), [](char c) { return c >= '0' && c <= '9'; })) return std::nullopt;
+        return scan::parse_decimal(d, 1ull << 40).value_or(1ull << 40);
+    };
+    size_t x = s.find_first_of("xX");
+    auto w = x == std::string::npos ? std::nullopt : dim(std::string_view(s).substr(0, x));
+    auto h = x == std::string::npos ? std::nullopt : dim(std::string_view(s).substr(x + 1));
+    if (!w || !h) {
         Error e = make_error("--size expects WxH (e.g. 640x360), got '" + s + "'");
         e.code = ExitCode::usage;
         return e;
     }
     // The same bound the graph validator uses for images: refuse before allocating anything.
-    if (w < 1 || h < 1 || w > 16384 || h > 16384) {
+    if (*w < 1 || *h < 1 || *w > 16384 || *h > 16384) {
         Error e = make_error("--size " + s + " is outside 1x1 .. 16384x16384");
         e.code = ExitCode::usage;
         return e;
     }
-    return std::optional<std::array<int, 2>>{std::array<int, 2>{w, h}};
+    return std::optional<std::array<int, 2>>{std::array<int, 2>{static_cast<int>(*w), static_cast<int>(*h)}};
 }
 
 Result<LoadedPreset> resolve_and_configure(const std::string& preset, const std::string& size,
@@ -73,8 +88,8 @@ Result<std::vector<std::filesystem::path>> collect_presets(const std::string& ar
     std::error_code ec;
     std::vector<fs::path> out;
     if (fs::is_directory(arg, ec) && !fs::exists(fs::path(arg) / "preset.toml", ec)) {
-        for (const auto& e : fs::recursive_directory_iterator(arg, ec))
-            if (e.path().filename() == "preset.toml") out.push_back(fs::absolute(e.path()));
+        for (const auto& f : files_under(arg))
+            if (f.filename() == "preset.toml") out.push_back(canonical_or_normal(f));
         std::sort(out.begin(), out.end());
         if (out.empty()) return make_error("no preset.toml under '" + arg + "'");
         return out;
@@ -93,20 +108,19 @@ Result<std::vector<std::filesystem::path>> exercise_overlay(const CommonOptions&
         e.code = ExitCode::usage;
         return e;
     }
-    return std::vector<std::filesystem::path>{std::filesystem::absolute(c.exercise)};
+    return std::vector<std::filesystem::path>{canonical_or_normal(c.exercise)};
 }
 
 int describe_exercise(const CommonOptions& c, const exec::CompiledGraph& g) {
     if (c.exercise.empty()) return 0;
     namespace fs = std::filesystem;
-    const fs::path dir = fs::weakly_canonical(fs::absolute(c.exercise));
+    const fs::path dir = canonical_or_normal(c.exercise);
     std::set<fs::path> read;  // every file the build read, canonical once
-    for (const auto& d : g.dependencies) read.insert(fs::weakly_canonical(d));
+    for (const auto& d : g.dependencies) read.insert(canonical_or_normal(d));
     int used_count = 0;
-    std::error_code ec;
-    for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
-        if (!it->is_regular_file()) continue;
-        const fs::path f = fs::weakly_canonical(it->path());
+    bool truncated = false;
+    for (const auto& file : files_under(dir, 20000, &truncated)) {
+        const fs::path f = canonical_or_normal(file);
         bool used = read.count(f) > 0;
         used_count += used;
         const std::string rel = f.lexically_relative(dir).string();
@@ -114,6 +128,9 @@ int describe_exercise(const CommonOptions& c, const exec::CompiledGraph& g) {
         else if (f.extension() != ".md" && f.extension() != ".txt")
             std::fprintf(stderr, "exercise: warning: %s shadows no file the preset reads (is the name right?)\n", rel.c_str());
     }
+    if (truncated)
+        std::fprintf(stderr, "exercise: warning: %s holds more than 20000 entries; only the first were listed (is it the right folder?)\n",
+                     c.exercise.c_str());
     return used_count;
 }
 
@@ -129,9 +146,9 @@ std::vector<std::string> exercise_files(const std::filesystem::path& preset_toml
                 out.push_back(it->path().lexically_relative(root / "exercise").string());
     } else {
         // Otherwise any file of the preset's folder the build read, but the TOML itself.
-        const fs::path canon_root = fs::weakly_canonical(root);
+        const fs::path canon_root = canonical_or_normal(root);
         for (const auto& d : g.dependencies) {
-            fs::path f = fs::weakly_canonical(d);
+            fs::path f = canonical_or_normal(d);
             fs::path rel = f.lexically_relative(canon_root);
             if (!rel.empty() && *rel.begin() != ".." && f.filename() != "preset.toml") out.push_back(rel.string());
         }

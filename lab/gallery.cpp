@@ -6,7 +6,8 @@
 #include "exec/executor.hpp"
 #include "image/image.hpp"
 #include "report.hpp"
-#include "vk/context.hpp"
+#include "util/files.hpp"
+#include "vk/context_slot.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -23,8 +24,8 @@ int gallery(const std::string& out_dir, int width, const CommonOptions& c) {
     fs::path root = exec::presets_dir();
     std::vector<fs::path> presets;
     std::error_code ec;
-    for (const auto& e : fs::recursive_directory_iterator(root, ec))
-        if (e.path().filename() == "preset.toml") presets.push_back(e.path());
+    for (const auto& f : files_under(root))
+        if (f.filename() == "preset.toml") presets.push_back(f);
     std::sort(presets.begin(), presets.end());
     if (presets.empty()) {
         Error e = make_error("no presets under " + root.string());
@@ -33,8 +34,11 @@ int gallery(const std::string& out_dir, int width, const CommonOptions& c) {
     vk::ContextOptions co;
     co.device = c.device;
     co.validation = c.validation;
-    auto ctx = vk::Context::create(co);
-    if (!ctx) return report(ctx.error());
+    // A runaway preset costs its thumbnail, not the gallery: the rest render on a fresh device.
+    vk::ContextSlot slot(co);
+    auto first = slot.get();
+    if (!first) return report(first.error());
+    const std::string device = (*first)->device_description();
     fs::create_directories(out_dir, ec);
 
     struct Item {
@@ -68,18 +72,20 @@ int gallery(const std::string& out_dir, int width, const CommonOptions& c) {
         it.title = built->desc.meta.title.empty() ? it.name : built->desc.meta.title;
         it.summary = built->desc.meta.summary;
         std::string output = built->desc.output;
+        auto ctx = slot.get();
+        if (!ctx) return report(ctx.error());
         auto ex = exec::Executor::create(**ctx, std::move(built.value()));
         if (!ex) {
             ++failures;
             std::fputs(ex.error().format().c_str(), stderr);
             continue;
         }
+        (*ex)->set_timeout(timeout(c));
         exec::FrameInput in;
         in.time = 0.5;
         if (auto s = (*ex)->render(in); !s) {
             ++failures;
             std::fputs(s.error().format().c_str(), stderr);
-            if ((*ctx)->hung()) exit_after_hang(1);
             continue;
         }
         auto img = (*ex)->read(output);
@@ -102,7 +108,7 @@ int gallery(const std::string& out_dir, int width, const CommonOptions& c) {
          "body{font-family:system-ui,sans-serif;margin:24px;background:#14161a;color:#e8eaed}h2{border-bottom:1px solid #333}\n"
          ".grid{display:flex;flex-wrap:wrap;gap:16px}.card{width:" << width << "px;background:#1f2227;padding:8px;border-radius:6px}\n"
          ".card img{width:100%}.card h3{font-size:15px;margin:6px 0 2px}.card p{font-size:12px;color:#aab}</style></head><body>\n"
-         "<h1>passlab gallery</h1><p>" << items.size() << " presets &middot; " << html_escape((*ctx)->device_description()) << "</p>\n";
+         "<h1>passlab gallery</h1><p>" << items.size() << " presets &middot; " << html_escape(device) << "</p>\n";
     for (const auto& [family, list] : by_family) {
         h << "<h2>" << html_escape(family) << "</h2><div class=\"grid\">\n";
         for (const Item* it : list)
@@ -134,6 +140,7 @@ int gallery(const std::string& out_dir, int width, const CommonOptions& c) {
     fs::path sheet_file = fs::path(out_dir) / "contact-sheet.png";
     if (auto s = image::save_image(sheet, sheet_file); !s) return report(s.error());
     std::printf("%s\n%s\n", (fs::path(out_dir) / "index.html").string().c_str(), sheet_file.string().c_str());
+    if (slot.any_hung()) exit_after_hang(failures ? 1 : 0);
     return failures ? 1 : 0;
 }
 

@@ -7,7 +7,7 @@
 #include "verbs.hpp"
 
 #include "check/checks.hpp"
-#include "vk/context.hpp"
+#include "vk/context_slot.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -50,7 +50,8 @@ int grade(const GradeOptions& o, const CommonOptions& c) {
     vk::ContextOptions co;
     co.validation = true;  // as in `passlab test`: a validation message fails the case
     co.device = c.device;
-    auto ctx = vk::Context::create(co);
+    vk::ContextSlot slot(co);
+    auto ctx = slot.get();
     if (!ctx) return report(ctx.error());
 
     check::RunOptions ro;
@@ -59,7 +60,8 @@ int grade(const GradeOptions& o, const CommonOptions& c) {
     ro.cache_dir = cache_dir(c);
     ro.fail_dir = o.out_dir;
     ro.overlay_dirs = lp->options.overlay_dirs;
-    auto results = check::run_preset_tests(**ctx, lp->toml, ro);
+    ro.timeout = timeout(c);
+    auto results = check::run_preset_tests(slot, lp->toml, ro);
 
     int passed = 0, failed = 0, skipped = 0;
     for (const auto& r : results) {
@@ -84,6 +86,7 @@ int grade(const GradeOptions& o, const CommonOptions& c) {
     std::printf("%d passed, %d failed", passed, failed);
     if (skipped) std::printf(", %d skipped", skipped);
     std::printf(" (%s)\n", (*ctx)->device_description().c_str());
+    if (slot.any_hung()) exit_after_hang(failed ? 1 : 0);
     return failed ? 1 : 0;
 }
 

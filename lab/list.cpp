@@ -7,6 +7,7 @@
 #include "exec/build.hpp"
 #include "graph/course_docs.hpp"
 #include "graph/parse.hpp"
+#include "util/files.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -75,13 +76,13 @@ int list(bool verbose, bool catalogue) {
     std::vector<fs::path> found;
     std::error_code ec;
     if (fs::is_directory(root, ec))
-        for (const auto& e : fs::recursive_directory_iterator(root, ec))
-            if (e.path().filename() == "preset.toml") found.push_back(e.path());
+        for (const auto& f : files_under(root))
+            if (f.filename() == "preset.toml") found.push_back(f);
     std::sort(found.begin(), found.end());
     int broken = 0;
     std::vector<Entry> entries;
     for (const auto& f : found) {
-        std::string name = fs::relative(f.parent_path(), root).string();
+        std::string name = f.parent_path().lexically_relative(root).string();
         auto g = graph::parse_graph_file(f);
         if (!g) {
             ++broken;

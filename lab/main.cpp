@@ -4,7 +4,31 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <new>
+
+namespace {
+
+// CLI11's number checks pass NaN (every comparison with it is false) and inf; these refuse both.
+// A value within (lo, hi] (`open_low`) or [lo, hi].
+CLI::Validator finite_in(double lo, double hi, bool open_low = false) {
+    return CLI::Validator(
+        [=](std::string& s) -> std::string {
+            char* end = nullptr;
+            double v = std::strtod(s.c_str(), &end);
+            if (end == s.c_str() || *end || !std::isfinite(v)) return "'" + s + "' is not a finite number";
+            if (open_low ? v <= lo : v < lo) return "'" + s + "' must be " + (open_low ? "> " : ">= ") + std::to_string(lo);
+            if (v > hi) return "'" + s + "' must be <= " + std::to_string(hi);
+            return {};
+        },
+        "FINITE");
+}
+
+constexpr double max_seconds = 1e7;  // ~4 months of scene time; far beyond any use, far below overflow
+
+} // namespace
 
 int main(int argc, char** argv) {
     using namespace pl::lab;
@@ -18,7 +42,7 @@ int main(int argc, char** argv) {
         sub->add_option("--device", common.device, "Vulkan device: index or name substring (default: PASSLAB_DEVICE, else the best GPU, else lavapipe)");
         sub->add_flag("--validation", common.validation, "Enable the Khronos validation layer");
         sub->add_flag("--no-cache", common.no_cache, "Do not read or write the SPIR-V cache");
-        sub->add_option("--timeout", common.timeout_s, "Seconds a frame may take before it is cut off")->check(CLI::PositiveNumber);
+        sub->add_option("--timeout", common.timeout_s, "Seconds a frame may take before it is cut off")->check(finite_in(0, 86400, true));
     };
     // Course exercises: the files in DIR shadow the preset's own of the same name.
     auto add_exercise = [&](CLI::App* sub) {
@@ -30,9 +54,9 @@ int main(int argc, char** argv) {
     render_cmd->add_option("preset", ro.preset, "Preset folder, preset.toml, or name")->required();
     render_cmd->add_option("-o,--out", ro.out_dir, "Output folder")->required();
     render_cmd->add_option("--size", ro.size, "Size WxH (default: [view].size)");
-    render_cmd->add_option("--time", ro.time, "Time of the last frame, seconds");
+    render_cmd->add_option("--time", ro.time, "Time of the last frame, seconds")->check(finite_in(-max_seconds, max_seconds));
     render_cmd->add_option("--frames", ro.frames, "Number of frames to render")->check(CLI::Range(1, 100000));
-    render_cmd->add_option("--step", ro.step, "Seconds between frames")->check(CLI::NonNegativeNumber);
+    render_cmd->add_option("--step", ro.step, "Seconds between frames")->check(finite_in(0, 3600, true));
     render_cmd->add_option("--set", ro.set, "Param override name=value (repeatable)");
     render_cmd->add_option("--pass", ro.passes, "Also write this image (repeatable)");
     render_cmd->add_option("--format", ro.format, "Force png or exr")->check(CLI::IsMember({"png", "exr"}));
@@ -80,11 +104,11 @@ int main(int argc, char** argv) {
     auto* run_cmd = app.add_subcommand("run", "Live lab: a window with hot reload of every file the preset reads");
     run_cmd->add_option("preset", rn.preset, "Preset folder, preset.toml, or name")->required();
     run_cmd->add_option("--size", rn.size, "Window / view size WxH");
-    run_cmd->add_option("--time", rn.time, "Start time, seconds");
+    run_cmd->add_option("--time", rn.time, "Start time, seconds")->check(finite_in(-max_seconds, max_seconds));
     run_cmd->add_option("--set", rn.set, "Param override name=value (repeatable)");
     run_cmd->add_option("--present", rn.present, "fifo, mailbox or immediate")->check(CLI::IsMember({"fifo", "mailbox", "immediate"}));
     run_cmd->add_option("--events", rn.events, "Write JSON-lines events (reloads, frames) to this file");
-    run_cmd->add_option("--seconds", rn.seconds, "Quit after this many seconds")->check(CLI::NonNegativeNumber);
+    run_cmd->add_option("--seconds", rn.seconds, "Quit after this many seconds")->check(finite_in(0, max_seconds));
     run_cmd->add_option("--frames", rn.frames, "Quit after this many frames")->check(CLI::NonNegativeNumber);
     run_cmd->add_flag("!--no-ui", rn.ui, "Start without the panel (Tab shows it)");
     run_cmd->add_flag("!--no-sidecar", rn.sidecar, "Ignore saved param values (preset.params.toml)");
@@ -151,6 +175,7 @@ int main(int argc, char** argv) {
         return rc == 0 ? 0 : 2;  // usage errors exit 2 (docs/cli.md)
     }
 
+    auto dispatch = [&]() -> int {
     if (render_cmd->parsed()) return render(ro, common);
     if (test_cmd->parsed()) return test(to, common);
     if (check_cmd->parsed()) return check(preset, set, common, spirv_dir, check_json);
@@ -163,4 +188,14 @@ int main(int argc, char** argv) {
     if (grade_cmd->parsed()) return grade(go, common);
     if (mutate_cmd->parsed()) return mutate(mo, common);
     return 2;
+    };
+    try {
+        return dispatch();
+    } catch (const std::bad_alloc&) {
+        // A host allocation too large for the machine (a readback of a huge image under a
+        // memory limit): an environment error, exit 3, not an abort.
+        std::fputs("passlab: error: out of memory (a host allocation failed)\n"
+                   "    hint: make the images or buffers smaller (--size, size expressions)\n", stderr);
+        return 3;
+    }
 }

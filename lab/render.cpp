@@ -60,7 +60,7 @@ int render(const RenderOptions& o, const CommonOptions& c) {
     std::string preset_name = built->desc.dir.filename().string();
     auto ex = exec::Executor::create(**ctx, std::move(built.value()));
     if (!ex) return report(ex.error());
-    (*ex)->set_timeout(std::chrono::milliseconds(static_cast<long long>(c.timeout_s * 1000)));
+    (*ex)->set_timeout(timeout(c));
     double t_setup = ms_since(t2);
 
     auto t3 = Clock::now();

@@ -185,7 +185,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
     // A runaway shader is cut off after --timeout: the watchdog reports which passes were in the
     // frame. The device cannot be trusted after that (lavapipe cannot cancel a shader), so the
     // lab ends with the message rather than render on a hung queue.
-    const auto frame_timeout = std::chrono::milliseconds(static_cast<long long>(c.timeout_s * 1000));
+    const auto frame_timeout = timeout(c);
     current->set_timeout(frame_timeout);
     std::vector<graph::ParamDesc> base_params = current->params();  // preset.toml + --set: "Reset" returns here
 

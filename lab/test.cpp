@@ -9,7 +9,7 @@
 #include "results.hpp"
 #include "test_select.hpp"
 #include "test_workers.hpp"
-#include "vk/context.hpp"
+#include "vk/context_slot.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -61,22 +61,21 @@ std::vector<std::string> worker_args(const TestOptions& o, const CommonOptions& 
     return a;
 }
 
-// Runs the units in this process on one device. Returns false when a runaway shader still
-// occupies the device (the caller ends the process without waiting for it).
-bool run_here(const std::vector<TestUnit>& units, const TestOptions& o, vk::Context& ctx,
+// Runs the units in this process. A case whose shader runs away fails; its device is abandoned
+// and the remaining cases run on a fresh one from the slot (the caller ends the process without
+// waiting for the old one: slot.any_hung()).
+void run_here(const std::vector<TestUnit>& units, const TestOptions& o, vk::ContextSlot& slot,
               const check::RunOptions& base, RunSummary& out) {
     for (const auto& u : units) {
         check::RunOptions ro = base;
         ro.cases = u.cases;
         ro.output_stem = u.stem;
         if (u.selected() == 0) continue;
-        for (auto& r : check::run_preset_tests(ctx, u.toml, ro)) {
+        for (auto& r : check::run_preset_tests(slot, u.toml, ro)) {
             out.entries.push_back({u.where, std::move(r)});
             print_case(out.entries.back(), o.verbose);
         }
-        if (ctx.hung()) return false;
     }
-    return true;
 }
 
 void print_summary(const RunSummary& s) {
@@ -143,6 +142,7 @@ int test(const TestOptions& o, const CommonOptions& c) {
     ro.cache_dir = cache_dir(c);
     ro.fail_dir = o.fail_dir;
     ro.report_dir = o.report_dir;
+    ro.timeout = timeout(c);
     auto overlay = exercise_overlay(c);
     if (!overlay) return report(overlay.error());
     ro.overlay_dirs = *overlay;
@@ -156,6 +156,8 @@ int test(const TestOptions& o, const CommonOptions& c) {
 
     auto t0 = std::chrono::steady_clock::now();
     RunSummary summary;
+    // Outlives the run: a device that hung must not be destroyed before the process ends.
+    std::unique_ptr<vk::ContextSlot> slot;
     if (jobs > 1) {
         auto merged = run_in_workers(active, jobs, worker_args(o, c));
         if (!merged) return report(merged.error());
@@ -165,32 +167,20 @@ int test(const TestOptions& o, const CommonOptions& c) {
         // Tests always run under the validation layer when it is installed (--no-validation to skip).
         co.validation = !o.no_validation;
         co.device = c.device;
-        auto ctx = vk::Context::create(co);
+        slot = std::make_unique<vk::ContextSlot>(co);
+        auto ctx = slot->get();
         if (!ctx) return report(ctx.error());
         if (!(*ctx)->validation_enabled() && !o.no_validation)
             std::fprintf(stderr, "test: the Khronos validation layer is not installed; running without it\n");
         summary.device = (*ctx)->device_description();
-        if (!run_here(active, o, **ctx, ro, summary)) {
-            std::printf("stopping: the GPU is still running a shader that exceeded the time limit\n");
-            if (!o.worker_json.empty()) {
-                // The parent still gets this worker's results, the runaway case among them.
-                ReportEntry hang;
-                hang.where = summary.entries.empty() ? std::string("(worker)") : summary.entries.back().where;
-                hang.result.name = "(device hung)";
-                hang.result.error = "the GPU is still running a shader that exceeded the time limit; later cases of this worker did not run\n";
-                summary.entries.push_back(hang);
-                (void)write_json_file(o.worker_json, to_json(summary));
-            }
-            Counts n = count(summary.entries);
-            std::printf("%d passed, %d failed\n", n.passed, n.failed + 1);
-            exit_after_hang(1);
-        }
+        run_here(active, o, *slot, ro, summary);
     }
     summary.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
     if (!o.worker_json.empty()) {
         // A -j worker: the parent prints the summary and writes the outputs.
         if (auto s = write_json_file(o.worker_json, to_json(summary)); !s) return report(s.error());
+        if (slot && slot->any_hung()) exit_after_hang(count(summary.entries).failed ? 1 : 0);
         return count(summary.entries).failed ? 1 : 0;
     }
     int rc = count(summary.entries).failed ? 1 : 0;
@@ -207,6 +197,10 @@ int test(const TestOptions& o, const CommonOptions& c) {
         std::printf("junit: %s\n", o.junit.c_str());
     }
     print_summary(summary);
+    if (slot && slot->any_hung()) {
+        std::printf("a runaway shader may still be running on an abandoned device: ending without waiting for it\n");
+        exit_after_hang(rc);
+    }
     return rc;
 }
 

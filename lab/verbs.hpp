@@ -6,6 +6,7 @@
 #include "util/error.hpp"
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -114,6 +115,7 @@ int report(const Error& e);  // prints the error, returns its exit code
 // unloading the driver could hang, so the process ends here after reporting.
 [[noreturn]] void exit_after_hang(int code);
 std::string cache_dir(const CommonOptions& c);
+std::chrono::milliseconds timeout(const CommonOptions& c);  // --timeout as the watchdog's duration
 Result<std::optional<std::array<int, 2>>> parse_size(const std::string& s);
 
 // What every verb that renders starts with: resolve PRESET, apply --size and --set, build.

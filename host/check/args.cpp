@@ -31,6 +31,9 @@ std::vector<int> channels(const Args& args) {
     std::vector<int> out;
     for (double c : vec(args, "channels")) out.push_back(static_cast<int>(c));
     if (args.count("channel")) out = {static_cast<int>(num(args, "channel", 0))};
+    // The parser refuses channels outside 0..3; this keeps a check from ever indexing past a
+    // texel's four floats even if one got through (it once read out of bounds).
+    std::erase_if(out, [](int c) { return c < 0 || c > 3; });
     if (out.empty()) out = {0, 1, 2};
     return out;
 }

@@ -80,6 +80,7 @@ struct Variant {
 
 Result<Rendered> render_case(vk::Context& ctx, const fs::path& toml, const graph::TestDesc& t, const RunOptions& opt,
                              const Variant& v = {}) {
+    if (ctx.hung()) return make_error("not rendered: an earlier render of this case ran away");
     exec::BuildOptions bo;
     bo.cache_dir = opt.cache_dir;
     bo.overlay_dirs = opt.overlay_dirs;
@@ -91,6 +92,7 @@ Result<Rendered> render_case(vk::Context& ctx, const fs::path& toml, const graph
     if (!built) return built.error();
     auto ex = exec::Executor::create(ctx, std::move(built.value()));
     if (!ex) return ex.error();
+    (*ex)->set_timeout(opt.timeout);
     Rendered out{std::move(ex.value()), {}, {}};
     for (int f = 0; f < t.frames; ++f) {
         exec::FrameInput in;
@@ -206,7 +208,7 @@ fs::path case_stem(const RunOptions& opt, const fs::path& toml, const std::strin
     return opt.output_stem / name;
 }
 
-std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml, const RunOptions& opt) {
+std::vector<CaseResult> run_preset_tests(vk::ContextSlot& slot, const fs::path& toml, const RunOptions& opt) {
     std::vector<CaseResult> out;
     exec::BuildOptions base;
     base.cache_dir = opt.cache_dir;
@@ -226,12 +228,18 @@ std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml,
     const graph::GraphDesc& desc = probe_build->desc;
     for (const auto& t : desc.tests) {
         if (opt.cases && !opt.cases->count(t.name)) continue;
-        if (ctx.hung()) break;  // a runaway shader still occupies the device
         auto t0 = std::chrono::steady_clock::now();
         CaseResult cr;
         cr.preset = preset;
         cr.name = t.name;
         cr.hint = t.hint;
+        auto device = slot.get();  // a fresh one after a runaway case
+        if (!device) {
+            cr.error = device.error().format();
+            out.push_back(cr);
+            continue;
+        }
+        vk::Context& ctx = **device;
         size_t msgs_before = ctx.validation_message_count();
         for (const auto& f : t.requires_features)
             if (!ctx.features().has(f)) {
@@ -264,6 +272,7 @@ std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml,
                     cr.checks.push_back(compare_golden(**img, t, toml.parent_path(), opt, case_id));
                 for (const auto& w : rendered->ex->counters()) cr.checks.push_back(counter_result(w));
                 for (const auto& c : t.checks) {
+                    if (ctx.hung()) break;  // a check's own render ran away: nothing more to read
                     if (c.args.count("buffer")) {
                         auto words = rendered->get_buffer(str(c.args, "buffer"));
                         const auto& cg = rendered->ex->graph();
@@ -289,6 +298,8 @@ std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const fs::path& toml,
                 }
             }
         }
+        if (ctx.hung())
+            cr.error += "    the device is left to the runaway shader; the remaining cases run on a fresh one\n";
         auto msgs = ctx.validation_messages();
         for (size_t k = msgs_before; k < msgs.size(); ++k) cr.validation.push_back(msgs[k]);
         cr.passed = cr.error.empty() && cr.validation.empty();

@@ -6,8 +6,9 @@
 #include "exec/build.hpp"
 #include "exec/executor.hpp"
 #include "graph/desc.hpp"
-#include "vk/context.hpp"
+#include "vk/context_slot.hpp"
 
+#include <chrono>
 #include <filesystem>
 #include <optional>
 #include <set>
@@ -51,13 +52,16 @@ struct RunOptions {
     // Relative path under fail_dir/report_dir for this preset's images, unique per preset
     // (e.g. "presets/aa/msaa"); empty: the folder's basename as a prefix of the file name.
     std::filesystem::path output_stem;
+    std::chrono::milliseconds timeout{std::chrono::seconds(20)};  // GPU watchdog per frame (--timeout)
 };
 
 // The output file stem (without extension) of a case: "<output_stem>/<case>" or "<basename>.<case>".
 std::filesystem::path case_stem(const RunOptions& opt, const std::filesystem::path& preset_toml, const std::string& name);
 
-// Runs every [[test]] of one preset on `ctx`.
-std::vector<CaseResult> run_preset_tests(vk::Context& ctx, const std::filesystem::path& preset_toml,
+// Runs every [[test]] of one preset on the slot's device. A case whose frame exceeds the
+// watchdog fails with the runaway passes named; the device it hung is abandoned and the
+// remaining cases run on a fresh one.
+std::vector<CaseResult> run_preset_tests(vk::ContextSlot& slot, const std::filesystem::path& preset_toml,
                                          const RunOptions& opt);
 
 } // namespace pl::check

@@ -20,9 +20,11 @@ CheckResult compare_golden(const image::Image& img, const graph::TestDesc& t, co
         return it == t.tolerance.end() ? def : it->second;
     };
     std::optional<image::Image> previous;
+    std::string unreadable;  // why an existing golden cannot be read (a FIFO, a device, corrupt)
     if (exists) {
         auto prev = image::load_image(file);
         if (prev) previous = std::move(prev.value());
+        else unreadable = prev.error().message;
     }
     if (!exists || update) {
         if (!exists && opt.ci) {
@@ -48,7 +50,7 @@ CheckResult compare_golden(const image::Image& img, const graph::TestDesc& t, co
         return r;
     }
     if (!previous) {
-        r.detail = "cannot read golden " + file.string();
+        r.detail = unreadable.empty() ? "cannot read golden " + file.string() : unreadable;
         return r;
     }
     const image::Image& expected = *previous;

@@ -1,11 +1,12 @@
 #include "exec/bind.hpp"
 
 #include "graph/camera_values.hpp"
+#include "shader/include.hpp"
+#include "util/scan.hpp"
 #include "vk/formats.hpp"
 
 #include <algorithm>
 #include <fstream>
-#include <regex>
 
 namespace fs = std::filesystem;
 
@@ -40,7 +41,6 @@ std::string code_of(const std::string& line, bool& in_block) {
 SourceLoc find_declaration(const std::vector<fs::path>& files, const std::vector<std::string>& names) {
     for (const auto& name : names) {
         if (name.empty()) continue;
-        std::regex word("\\b" + name + "\\b");
         for (const auto& f : files) {
             std::ifstream in(f);
             std::string raw;
@@ -49,8 +49,8 @@ SourceLoc find_declaration(const std::vector<fs::path>& files, const std::vector
                 // Only code counts: a comment that says "the scene buffer" is not a declaration.
                 std::string line = code_of(raw, in_block);
                 if (line.find("uniform") == std::string::npos && line.find("buffer") == std::string::npos) continue;
-                std::smatch m;
-                if (std::regex_search(line, m, word)) return {fs::proximate(f).string(), n, static_cast<int>(m.position(0)) + 1};
+                if (size_t at = scan::find_word(line, name); at != std::string::npos)
+                    return {shader::display_path(f), n, static_cast<int>(at) + 1};
             }
         }
     }

@@ -6,6 +6,9 @@
 #include "graph/parse.hpp"
 #include "graph/sizeexpr.hpp"
 #include "graph/validate.hpp"
+#include "shader/include.hpp"
+#include "util/paths.hpp"
+#include "util/scan.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -89,7 +92,7 @@ Status compile_pass(CompiledGraph& g, CompiledPass& cp, const BuildOptions& opt)
     auto add = [&](shader::Stage st, const graph::ShaderRef& ref) {
         if (ref.empty()) return;
         fs::path f = find_shader(g.search_dirs, ref.file);
-        stages.push_back({st, f, fs::proximate(f).string(), {}});
+        stages.push_back({st, f, shader::display_path(f), {}});
     };
     switch (pd.kind) {
     case graph::PassKind::fullscreen:
@@ -120,6 +123,17 @@ Status compile_pass(CompiledGraph& g, CompiledPass& cp, const BuildOptions& opt)
     if (!prog) {
         Error e = prog.error();
         if (e.pass.empty()) e.pass = pd.name;
+        // A line that uses one of the pass's defines most likely fails because of its value
+        // (set in preset.toml, while the line may be in a library shader): blame the define.
+        for (const auto& [name, value] : pd.defines) {
+            if (scan::find_word(e.source_line, name) == std::string::npos) continue;
+            SourceLoc at = pd.keys.at("defines." + name, pd.loc);
+            e.notes.insert(e.notes.begin(), "where it is used: " + e.loc.str() + ": " + e.source_line);
+            e.message += " (with " + name + " = " + value + ")";
+            e.loc = at;
+            e.source_line = read_source_line(at.file, at.line);
+            break;
+        }
         return e;
     }
     cp.program = std::move(prog.value());
@@ -145,7 +159,7 @@ Result<CompiledGraph> build_graph(const fs::path& preset_toml, const BuildOption
     if (opt.size) g.desc.view.size = *opt.size;
     g.view = g.desc.view.size;
 
-    for (const auto& d : opt.overlay_dirs) g.search_dirs.push_back(fs::absolute(d));
+    for (const auto& d : opt.overlay_dirs) g.search_dirs.push_back(canonical_or_normal(d));
     g.search_dirs.push_back(g.desc.dir);
     g.search_dirs.push_back(passes_dir());
 

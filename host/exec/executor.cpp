@@ -41,11 +41,39 @@ scene::OrbitCamera to_camera(const graph::ViewDesc& v, const graph::OrbitCamera&
 Executor::~Executor() {
     if (ctx_.hung()) {
         // Objects the running shader uses must outlive it: give them up instead of destroying.
+        // That is every GPU object of this executor, the command buffer's pools, the fence it
+        // signals and the query pool it writes included (destroying those was a validation error
+        // and once a crash); the process ends soon after (see ContextSlot).
         new GraphResources(std::move(res_));
         new std::vector<std::shared_ptr<PassPipeline>>(std::move(pipelines_));
+        new vk::Buffer[4]{std::move(frame_ubo_), std::move(params_ubo_), std::move(cameras_ubo_),
+                          std::move(counter_readback_)};
+        (void)pool_.release();
+        (void)cmd_pool_.release();
+        (void)fence_.release();
+        (void)queries_.release();
         return;
     }
     if (ctx_.device()) vkDeviceWaitIdle(ctx_.device());
+}
+
+std::string Executor::timeout_cause() const {
+    // A runaway loop is the usual cause, but a frame can also be slow only because it is big:
+    // say which when the graph is large enough for that to be plausible.
+    std::string big;
+    double largest = 0;
+    for (const auto& [name, gi] : res_.images) {
+        double texels = double(gi.extent.width) * gi.extent.height * gi.extent.depth * gi.layers;
+        if (texels > largest && texels > 4096.0 * 4096.0) {
+            largest = texels;
+            big = "image '" + name + "' is " + std::to_string(gi.extent.width) + "x" + std::to_string(gi.extent.height);
+        }
+    }
+    for (const auto& [name, m] : res_.meshes)
+        if (double(m.index_count) / 3 * m.instances > 2e7)
+            big = "mesh '" + name + "' draws " + std::to_string(uint64_t(m.index_count) / 3 * m.instances) + " triangles";
+    if (big.empty()) return "a shader probably runs away (endless or very long loop)";
+    return "the frame is large (" + big + "), so it may be slow rather than endless";
 }
 
 Result<std::unique_ptr<Executor>> Executor::create(vk::Context& ctx, CompiledGraph graph, PipelineCache* cache) {
@@ -54,6 +82,7 @@ Result<std::unique_ptr<Executor>> Executor::create(vk::Context& ctx, CompiledGra
     CompiledGraph& g = *ex->graph_;
     VkDevice dev = ctx.device();
 
+    if (auto s = check_compute_limits(ctx.properties().limits, ctx.properties().deviceName, g); !s) return s.error();
     auto res = create_resources(ctx, g);
     if (!res) return res.error();
     ex->res_ = std::move(res.value());
@@ -222,7 +251,7 @@ Status Executor::render(const FrameInput& in) {
     VkSubmitInfo si{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO, .commandBufferCount = 1, .pCommandBuffers = &cmd_};
     uint64_t serial = ctx_.begin_submit();
     VK_CHECK(vkQueueSubmit(ctx_.queue(), 1, &si, fence_));
-    if (auto w = ctx_.wait(fence_, timeout_, "frame " + std::to_string(in.index)); !w) {
+    if (auto w = ctx_.wait(fence_, timeout_, "frame " + std::to_string(in.index), timeout_cause()); !w) {
         (void)fence_.release();  // the GPU may still run the shader: never destroy what it uses
         Error e = w.error();
         std::error_code ec;

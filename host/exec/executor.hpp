@@ -112,6 +112,7 @@ class Executor {
 
   private:
     explicit Executor(vk::Context& ctx) : ctx_(ctx) {}
+    std::string timeout_cause() const;  // why a frame may exceed the watchdog
     struct Impl;
     Status record_frame(VkCommandBuffer cb, const FrameInput& in);
     // One run of a pass: its own iteration and, in a [[group]], the group's iteration.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <sstream>
@@ -142,8 +143,10 @@ Status apply_param_value(std::vector<ParamDesc>& params, const std::string& name
         return bad("expects " + std::to_string(n) + " value(s), got " + std::to_string(nums.size()));
     for (int c = 0; c < n; ++c) {
         double v = nums[static_cast<size_t>(c)];
-        if (p.type == ParamType::i32 && v != static_cast<double>(static_cast<long long>(v)))
-            return bad("expects an integer");
+        // NaN passed every min/max comparison below (all are false with it); inf is no value.
+        if (!std::isfinite(v)) return bad("expects a finite number");
+        if (p.type == ParamType::i32 && v != std::trunc(v)) return bad("expects an integer");
+        if (p.type == ParamType::i32 && std::fabs(v) > 2147483647.0) return bad("is outside the 32-bit integer range");
         auto num = [](double x) {
             char b[32];
             std::snprintf(b, sizeof b, "%g", x);

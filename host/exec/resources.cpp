@@ -1,5 +1,7 @@
 #include "exec/resources.hpp"
 
+#include "exec/limits.hpp"
+
 #include "exec/barriers.hpp"
 #include "exec/bind.hpp"
 #include "exec/mesh_source.hpp"
@@ -225,6 +227,11 @@ Result<GpuMesh> create_mesh(vk::Context& ctx, const CompiledGraph& g, const grap
 Result<GraphResources> create_resources(vk::Context& ctx, const CompiledGraph& g) {
     GraphResources R;
     graph::SizeEnv env = size_env(g.desc, g.view);
+    const VkPhysicalDeviceLimits& limits = ctx.properties().limits;
+    const std::string device = ctx.properties().deviceName;
+    // Checked before each allocation, so that a graph too large for the device is an error at
+    // the resource's key, not VK_ERROR_OUT_OF_DEVICE_MEMORY from inside the driver.
+    MemoryBudget budget{ctx.largest_device_heap(), 0, device};
 
     // Images that own memory first, then aliases pointing at them.
     for (int pass = 0; pass < 2; ++pass) {
@@ -334,6 +341,16 @@ Result<GraphResources> create_resources(vk::Context& ctx, const CompiledGraph& g
                 info.usage |= VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
             }
             gi.history = d.history;
+            if (auto s = check_image_limits(limits, device, d, info.extent, info.layers, info.type == VK_IMAGE_TYPE_3D, info.cube); !s)
+                return s.error();
+            {
+                // Texels of every level (a full chain adds a third), layer, sample and history copy.
+                double texels = double(info.extent.width) * info.extent.height * info.extent.depth * info.layers * static_cast<double>(info.samples);
+                double per_texel = gi.format->compressed() ? gi.format->bytes_per_texel / double(gi.format->block * gi.format->block) : gi.format->bytes_per_texel;
+                double bytes = texels * per_texel * (info.mips > 1 ? 4.0 / 3.0 : 1.0) * (d.history ? 2 : 1);
+                if (auto s = budget.add(static_cast<VkDeviceSize>(bytes), "image '" + d.name + "'", d.keys.at("size", d.loc), d.name); !s)
+                    return s.error();
+            }
             for (int k = 0; k < (d.history ? 2 : 1); ++k) {
                 auto pi = std::make_shared<PhysImage>();
                 pi->image = vk::Image(ctx, info);
@@ -385,7 +402,10 @@ Result<GraphResources> create_resources(vk::Context& ctx, const CompiledGraph& g
                 e.resource = d.name;
                 return e;
             }
-            words = data_words(d, (static_cast<VkDeviceSize>(*size) + 3) / 4 * 4);
+            const VkDeviceSize rounded = (static_cast<VkDeviceSize>(*size) + 3) / 4 * 4;
+            if (auto s = budget.add(rounded * (d.history ? 2 : 1), "buffer '" + d.name + "'", d.keys.at("size", d.loc), d.name); !s)
+                return s.error();
+            words = data_words(d, rounded);
         }
         const VkDeviceSize bytes = words.size() * 4;
         VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |

@@ -5,10 +5,10 @@
 #include "graph/course_docs.hpp"
 
 #include "graph/parse_parts.hpp"
+#include "util/files.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <tuple>
 
@@ -85,7 +85,7 @@ Status parse_view(const toml::table& t, const std::string& file, GraphDesc& g) {
         }
         if (auto s = c.floats("fov", g.view.fov); !s) return s;
         if (auto s = c.floats("near", g.view.near); !s) return s;
-        if (auto s = c.floats("far", g.view.far); !s) return s;
+        if (auto s = c.floats("far", g.view.far, /*allow_inf=*/true); !s) return s;
         if (auto s = c.boolean("ortho", g.view.ortho); !s) return s;
         if (auto s = c.floats("ortho_height", g.view.ortho_height); !s) return s;
         if (!(g.view.fov > 0 && g.view.fov < 180)) return c.error("camera: fov must be between 0 and 180 degrees", c.value_loc("fov"));
@@ -115,7 +115,8 @@ Result<GraphDesc> parse_graph_text(std::string_view text_in, const fs::path& as_
     // here keeps it out of the source lines quoted in errors and does not depend on the parser.
     if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
     GraphDesc g;
-    g.file = fs::absolute(as_file);
+    std::error_code abs_ec;
+    g.file = fs::absolute(as_file, abs_ec);
     g.dir = g.file.parent_path();
     // Messages name the file as the user would type it: relative to the working directory.
     std::error_code ec;
@@ -189,16 +190,10 @@ Result<GraphDesc> parse_graph_text(std::string_view text_in, const fs::path& as_
 }
 
 Result<GraphDesc> parse_graph_file(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        std::error_code ec;
-        Error e = make_error((fs::exists(file, ec) ? "cannot read '" : "no such file '") + file.string() + "'");
-        e.code = fs::exists(file, ec) ? ExitCode::environment : ExitCode::user;
-        return e;
-    }
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return parse_graph_text(ss.str(), file);
+    // A FIFO or /dev/zero as preset.toml would block or read without end: regular files only.
+    auto text = read_file_capped(file, max_text_bytes, "preset");
+    if (!text) return text.error();
+    return parse_graph_text(*text, file);
 }
 
 } // namespace pl::graph

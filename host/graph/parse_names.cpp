@@ -62,6 +62,13 @@ bool is_identifier(const std::string& s) {
 }
 
 Status check_name(const TableReader& r, const std::string& key, const char* what) {
+    // glslang refuses identifiers over 1024 characters, and names also become macros
+    // (NAME_OPTION): a generous bound here keeps the error at the key, not in the preamble.
+    constexpr size_t kMaxName = 128;
+    if (key.size() > kMaxName)
+        return r.error(std::string(what) + " name '" + key.substr(0, 32) + "...' is " + std::to_string(key.size()) +
+                           " characters long; names are limited to " + std::to_string(kMaxName),
+                       r.key_loc(key));
     if (!is_identifier(key))
         return r.error(std::string(what) + " name '" + key + "' must be an identifier (letters, digits, _; not starting with a digit)",
                        r.key_loc(key));

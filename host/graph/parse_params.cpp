@@ -108,6 +108,12 @@ struct ParamReader {
     }
 
     Status range(const TableReader* r) {
+        // TOML has nan and inf; NaN passed every min/max comparison (all are false with it).
+        if (p.min && !std::isfinite(*p.min)) return err("min must be a finite number, not " + num_text(*p.min), r ? r->value_loc("min") : p.loc);
+        if (p.max && !std::isfinite(*p.max)) return err("max must be a finite number, not " + num_text(*p.max), r ? r->value_loc("max") : p.loc);
+        for (int c = 0; c < p.components(); ++c)
+            if (!std::isfinite(p.value[static_cast<size_t>(c)]))
+                return err("value must be finite, not " + num_text(p.value[static_cast<size_t>(c)]), value_loc);
         if (p.min && p.max && *p.min > *p.max)
             return err("min " + num_text(*p.min) + " is greater than max " + num_text(*p.max), r ? r->value_loc("max") : p.loc);
         if ((p.min || p.max) && (p.type == ParamType::boolean || p.type == ParamType::enumeration))
@@ -151,11 +157,17 @@ Status parse_param(const toml::node& v, const TableReader& sec, const std::strin
     if (auto s = r.str("doc", p.doc); !s) return s;
     if (auto s = r.choice("type", type, kTypeNames); !s) return s;
     if (auto s = r.finish(); !s) return s;
-    std::set<std::string> seen;
+    std::set<std::string> seen, seen_upper;
     for (const auto& o : p.options) {
         // Each option becomes a define NAME_OPTION in the shaders.
         if (!is_identifier(o)) return pr.err("option \"" + o + "\" must be an identifier (it becomes a #define)", r.value_loc("options"));
         if (!seen.insert(o).second) return pr.err("option \"" + o + "\" is listed twice", r.value_loc("options"));
+        // In capitals: two options that differ only in case would define the same macro twice
+        // (an error inside the preamble, far from here).
+        std::string upper;
+        for (char c : o) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        if (!seen_upper.insert(upper).second)
+            return pr.err("options \"" + o + "\" and another differ only in case; both would be #define " + upper, r.value_loc("options"));
     }
     if (auto s = pr.value(*value, type, color); !s) return s;
     if (p.log && p.type != ParamType::f32 && p.type != ParamType::i32)

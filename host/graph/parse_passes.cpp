@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 
 namespace pl::graph {
 
@@ -142,11 +143,22 @@ Status parse_stencil_face(TableReader& r, StencilFaceDesc& f) {
 // form that reads back exactly and still looks like a float ("0.5", "1.0", "1e-07"), bools 1/0
 // (so that `#if NAME` works).
 Result<std::string> define_text(const toml::node& v, const TableReader& r, const std::string& key) {
-    if (v.is_string()) return *v.value<std::string>();
+    if (v.is_string()) {
+        // One line of GLSL: a newline would end the #define inside the preamble, where the
+        // error would be reported far from here.
+        std::string t = *v.value<std::string>();
+        if (t.empty()) return r.error(r.what() + ": defines." + key + " is empty (use true/false or 1/0 for a flag)", r.loc_of(v));
+        for (char c : t)
+            if (static_cast<unsigned char>(c) < 0x20 && c != '\t')
+                return r.error(r.what() + ": defines." + key + " must be one line of GLSL (no newline or control character)", r.loc_of(v));
+        if (t.back() == '\\') return r.error(r.what() + ": defines." + key + " must not end in a backslash (a line continuation)", r.loc_of(v));
+        return t;
+    }
     if (v.is_boolean()) return std::string(*v.value<bool>() ? "1" : "0");
     if (v.is_integer()) return std::to_string(*v.value<int64_t>());
     if (v.is_floating_point()) {
         double d = *v.value<double>();
+        if (!std::isfinite(d)) return r.error(r.what() + ": defines." + key + " must be finite (GLSL has no nan or inf literal)", r.loc_of(v));
         char buf[64];
         auto res = std::to_chars(buf, buf + sizeof buf, d);
         std::string s(buf, res.ptr);
@@ -257,6 +269,7 @@ Status parse_pass_body(const toml::table& t, const std::string& file, GraphDesc&
             auto text = define_text(v, r, key);
             if (!text) return text.error();
             p.defines[key] = *text;
+            p.keys.map["defines." + key] = r.loc_of(v);
         }
     if (auto bt = r.table("bind", "a table { shader_name = \"resource\" }"); !bt) return bt.error();
     else if (*bt) {

@@ -189,7 +189,18 @@ class Evaluator {
         return a;
     }
 
+    // Every nesting (parenthesis, call argument, unary sign) passes through unary(): a bound
+    // there keeps recursion finite; 10,000 nested '(' overflowed the stack before.
+    static constexpr int kMaxDepth = 100;
+    int depth_ = 0;
+    struct DepthGuard {
+        int& d;
+        ~DepthGuard() { --d; }
+    };
+
     std::optional<Vec> unary() {
+        DepthGuard guard{++depth_};
+        if (depth_ > kMaxDepth) return set(fail("nested more than " + std::to_string(kMaxDepth) + " deep", i_));
         ws();
         if (i_ < s_.size() && s_[i_] == '-') {
             size_t at = i_++;

@@ -1,6 +1,7 @@
 #include "graph/toml_reader.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace pl::graph {
 
@@ -79,17 +80,21 @@ Status TableReader::boolean(const std::string& key, bool& out) {
     return ok_status();
 }
 
-Status TableReader::number(const std::string& key, double& out) {
+Status TableReader::number(const std::string& key, double& out, bool allow_inf) {
     const toml::node* n = get(key);
     if (!n) return ok_status();
     if (!n->is_number()) return type_error(key, "a number");
-    out = *n->value<double>();
+    double v = *n->value<double>();
+    if (std::isnan(v) || (!allow_inf && std::isinf(v)))
+        return error(what_ + ": '" + key + "' must be a finite number, not " + (std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf"),
+                     value_loc(key));
+    out = v;
     return ok_status();
 }
 
-Status TableReader::floats(const std::string& key, float& out) {
+Status TableReader::floats(const std::string& key, float& out, bool allow_inf) {
     double d = out;
-    if (auto s = number(key, d); !s) return s;
+    if (auto s = number(key, d, allow_inf); !s) return s;
     out = static_cast<float>(d);
     return ok_status();
 }
@@ -136,6 +141,7 @@ Status TableReader::numbers(const std::string& key, std::vector<double>& out, si
     for (const auto& e : *a) {
         if (!e.is_number()) return error(what_ + ": '" + key + "' must be " + expected + "; an element is " + type_name(e), loc_of(e));
         v.push_back(*e.value<double>());
+        if (!std::isfinite(v.back())) return error(what_ + ": '" + key + "' must be finite numbers; an element is " + (std::isnan(v.back()) ? "nan" : "infinite"), loc_of(e));
     }
     if (v.size() < min_n || v.size() > max_n)
         return error(what_ + ": '" + key + "' must be " + expected + ", not " + std::to_string(v.size()), value_loc(key));

@@ -35,12 +35,14 @@ class TableReader {
 
     Status str(const std::string& key, std::string& out, SourceLoc* where = nullptr);
     Status boolean(const std::string& key, bool& out);
-    Status number(const std::string& key, double& out);
-    Status floats(const std::string& key, float& out);
+    // TOML has nan and inf. NaN is refused always (every range check passes it: all
+    // comparisons with it are false), inf unless `allow_inf` (far = inf, an infinite projection).
+    Status number(const std::string& key, double& out, bool allow_inf = false);
+    Status floats(const std::string& key, float& out, bool allow_inf = false);
     // Integers within [lo, hi]; a float such as 2.0 is refused (it is a typo for a count).
     Status integer(const std::string& key, int& out, int64_t lo = INT32_MIN, int64_t hi = INT32_MAX);
     Status uinteger(const std::string& key, uint32_t& out, int64_t hi = UINT32_MAX);
-    Status numbers(const std::string& key, std::vector<double>& out, size_t min_n, size_t max_n);
+    Status numbers(const std::string& key, std::vector<double>& out, size_t min_n, size_t max_n);  // finite
     Status integers(const std::string& key, std::vector<int64_t>& out, size_t min_n, size_t max_n);
     Status strings(const std::string& key, std::vector<std::string>& out);
     Status size(const std::string& key, SizeExpr& out);

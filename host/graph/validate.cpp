@@ -168,6 +168,11 @@ Status check_images(const GraphDesc& g, const DeclaredNames& n) {
         const vk::FormatInfo* ef = vk::find_format(effective_format(g, i));
         if (!i.file.empty()) {
             std::error_code ec;
+            if (fs::exists(g.dir / i.file, ec) && !fs::is_regular_file(g.dir / i.file, ec)) {
+                // A FIFO or /dev/zero would block or never end the image reader.
+                Error e = err("file '" + i.file + "' is not a regular file (a FIFO, a device or a folder): only regular files are read", "file");
+                return e;
+            }
             if (!fs::is_regular_file(g.dir / i.file, ec)) {
                 Error e = err("file '" + i.file + "' not found", "file");
                 e.notes.push_back("looked for " + (g.dir / i.file).string() + " (files are relative to the preset folder)");

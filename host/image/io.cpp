@@ -4,6 +4,7 @@
 // ~260 libraries. Writes go to a temporary file that is renamed into place, so an interrupted
 // run never leaves a truncated image behind.
 #include "image/image.hpp"
+#include "util/files.hpp"
 
 #include <dlfcn.h>
 #include <stb/stb_image_write.h>
@@ -55,6 +56,8 @@ Error environment_error(std::string msg) {
 } // namespace
 
 Result<Image> load_image(const fs::path& file) {
+    // A FIFO or /dev/zero would block the reader or make it seek forever.
+    if (auto ok = check_regular_file(file, max_asset_bytes, "image"); !ok) return ok.error();
     const Plugin& p = plugin();
     if (!p.error.empty()) return environment_error(p.error);
     char err[512] = {0};

@@ -1,6 +1,7 @@
 // Mesh files: .obj through tinyobjloader, .gltf/.glb through tinygltf (Debian ships both as
 // compiled libraries). Everything becomes one indexed triangle list in our Vertex layout.
 #include "scene/mesh.hpp"
+#include "util/files.hpp"
 
 #include <tiny_gltf.h>
 #include <tiny_obj_loader.h>
@@ -34,9 +35,34 @@ void compute_normals(Mesh& m) {
     }
 }
 
+// A face's triangles as corner indices into its vertex list. Quads split along the shorter
+// diagonal (as tinyobjloader does, so existing meshes are unchanged); larger polygons are
+// fanned from their first corner, in linear time: tinyobjloader's own triangulation of an
+// n-gon is quadratic and hung on a face of 200,000 corners.
+void triangulate_face(const tinyobj::attrib_t& a, const tinyobj::index_t* f, size_t n, std::vector<size_t>& out) {
+    out.clear();
+    if (n < 3) return;
+    if (n == 4) {
+        auto sq = [&](const tinyobj::index_t& p, const tinyobj::index_t& q) {
+            float d = 0;
+            for (int k = 0; k < 3; ++k) {
+                size_t i = 3 * size_t(p.vertex_index) + size_t(k), j = 3 * size_t(q.vertex_index) + size_t(k);
+                if (p.vertex_index < 0 || q.vertex_index < 0 || i >= a.vertices.size() || j >= a.vertices.size()) return 0.0f;
+                float e = a.vertices[j] - a.vertices[i];
+                d += e * e;
+            }
+            return d;
+        };
+        if (sq(f[0], f[2]) < sq(f[1], f[3])) out = {0, 1, 2, 0, 2, 3};
+        else out = {0, 1, 3, 1, 2, 3};
+        return;
+    }
+    for (size_t k = 1; k + 1 < n; ++k) out.insert(out.end(), {0, k, k + 1});
+}
+
 Result<Mesh> load_obj(const fs::path& file) {
     tinyobj::ObjReaderConfig cfg;
-    cfg.triangulate = true;
+    cfg.triangulate = false;  // see triangulate_face
     cfg.vertex_color = false;
     tinyobj::ObjReader reader;
     if (!reader.ParseFromFile(file.string(), cfg))
@@ -45,28 +71,44 @@ Result<Mesh> load_obj(const fs::path& file) {
     Mesh m;
     bool has_normals = !attrib.normals.empty();
     std::map<std::tuple<int, int, int>, uint32_t> dedupe;
+    // tinyobjloader counts a face's corners in an unsigned char: a face of 256 or more corners
+    // wraps, and the counts no longer add up to the indices. Refuse it rather than misread it.
+    for (const auto& shape : reader.GetShapes()) {
+        size_t sum = 0;
+        for (auto c : shape.mesh.num_face_vertices) sum += c;
+        if (sum != shape.mesh.indices.size())
+            return make_error("mesh '" + file.string() + "': a face has 256 or more corners, more than the OBJ reader can count; "
+                              "triangulate the mesh in a modelling tool");
+    }
+    std::vector<size_t> corners;
     for (const auto& shape : reader.GetShapes())
-        for (const auto& idx : shape.mesh.indices) {
-            auto key = std::make_tuple(idx.vertex_index, idx.normal_index, idx.texcoord_index);
-            auto it = dedupe.find(key);
-            if (it != dedupe.end()) {
-                m.indices.push_back(it->second);
-                continue;
+        for (size_t face = 0, first = 0; face < shape.mesh.num_face_vertices.size(); first += shape.mesh.num_face_vertices[face++]) {
+            size_t n = shape.mesh.num_face_vertices[face];
+            if (first + n > shape.mesh.indices.size()) break;
+            triangulate_face(attrib, &shape.mesh.indices[first], n, corners);
+            for (size_t c : corners) {
+                const tinyobj::index_t& idx = shape.mesh.indices[first + c];
+                auto key = std::make_tuple(idx.vertex_index, idx.normal_index, idx.texcoord_index);
+                auto it = dedupe.find(key);
+                if (it != dedupe.end()) {
+                    m.indices.push_back(it->second);
+                    continue;
+                }
+                if (idx.vertex_index < 0 || size_t(3 * idx.vertex_index + 2) >= attrib.vertices.size())
+                    return make_error("mesh '" + file.string() + "': a face refers to a vertex that does not exist");
+                Vertex v{};
+                for (int k = 0; k < 3; ++k) v.position[k] = attrib.vertices[3 * idx.vertex_index + k];
+                if (idx.normal_index >= 0 && size_t(3 * idx.normal_index + 2) < attrib.normals.size())
+                    for (int k = 0; k < 3; ++k) v.normal[k] = attrib.normals[3 * idx.normal_index + k];
+                if (idx.texcoord_index >= 0 && size_t(2 * idx.texcoord_index + 1) < attrib.texcoords.size()) {
+                    v.uv[0] = attrib.texcoords[2 * idx.texcoord_index];
+                    v.uv[1] = 1.0f - attrib.texcoords[2 * idx.texcoord_index + 1];  // OBJ v is bottom-up
+                }
+                uint32_t slot = static_cast<uint32_t>(m.vertices.size());
+                m.vertices.push_back(v);
+                dedupe.emplace(key, slot);
+                m.indices.push_back(slot);
             }
-            if (idx.vertex_index < 0 || size_t(3 * idx.vertex_index + 2) >= attrib.vertices.size())
-                return make_error("mesh '" + file.string() + "': a face refers to a vertex that does not exist");
-            Vertex v{};
-            for (int k = 0; k < 3; ++k) v.position[k] = attrib.vertices[3 * idx.vertex_index + k];
-            if (idx.normal_index >= 0 && size_t(3 * idx.normal_index + 2) < attrib.normals.size())
-                for (int k = 0; k < 3; ++k) v.normal[k] = attrib.normals[3 * idx.normal_index + k];
-            if (idx.texcoord_index >= 0 && size_t(2 * idx.texcoord_index + 1) < attrib.texcoords.size()) {
-                v.uv[0] = attrib.texcoords[2 * idx.texcoord_index];
-                v.uv[1] = 1.0f - attrib.texcoords[2 * idx.texcoord_index + 1];  // OBJ v is bottom-up
-            }
-            uint32_t n = static_cast<uint32_t>(m.vertices.size());
-            m.vertices.push_back(v);
-            dedupe.emplace(key, n);
-            m.indices.push_back(n);
         }
     if (m.indices.empty()) return make_error("mesh '" + file.string() + "' has no faces");
     if (!has_normals) compute_normals(m);
@@ -137,8 +179,7 @@ Result<Mesh> load_gltf(const fs::path& file) {
 } // namespace
 
 Result<Mesh> load_mesh(const fs::path& file) {
-    std::error_code ec;
-    if (!fs::is_regular_file(file, ec)) return make_error("mesh file '" + file.string() + "' not found");
+    if (auto ok = check_regular_file(file, max_asset_bytes, "mesh"); !ok) return ok.error();
     std::string ext = file.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
     Result<Mesh> m = ext == ".obj" ? load_obj(file) : (ext == ".gltf" || ext == ".glb") ? load_gltf(file)

@@ -6,15 +6,17 @@
 #include "shader/cache.hpp"
 #include "shader/include.hpp"
 #include "shader/program.hpp"
+#include "util/scan.hpp"
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include <cctype>
 #include <memory>
+#include <optional>
 #include <mutex>
 #include <algorithm>
-#include <regex>
 #include <tuple>
 #include <sstream>
 
@@ -54,56 +56,98 @@ void init_glslang() {
     std::call_once(once, [] { glslang::InitializeProcess(); });
 }
 
-// "ERROR: path:line: 'tok' : message" -> Error at path:line:col with the source line.
+// glslang's name of a stage in link messages ("Linking tessellation control stage: ...").
+const char* glslang_stage_name(Stage s) {
+    switch (s) {
+    case Stage::tess_control: return "tessellation control";
+    case Stage::tess_eval: return "tessellation evaluation";
+    default: return stage_name(s);
+    }
+}
+
+struct LogLine {
+    std::string file, message;
+    int line = 0;
+};
+
+// "ERROR: path:line: message". A path may itself hold ":123: " (a folder name, a #line name),
+// so the shader names the host gave glslang are tried first, then the first ":digits: ".
+std::optional<LogLine> split_log_line(std::string_view s, const std::map<std::string, fs::path>& files) {
+    const std::string_view prefix = "ERROR: ";
+    if (s.substr(0, prefix.size()) != prefix) return std::nullopt;
+    s.remove_prefix(prefix.size());
+    auto at = [&](size_t colon) -> std::optional<LogLine> {
+        size_t q = colon + 1;
+        while (q < s.size() && s[q] >= '0' && s[q] <= '9') ++q;
+        if (q == colon + 1 || s.substr(q, 2) != ": ") return std::nullopt;
+        auto n = scan::parse_decimal(s.substr(colon + 1, q - colon - 1), 1u << 30);
+        return LogLine{std::string(s.substr(0, colon)), std::string(s.substr(q + 2)), n ? static_cast<int>(*n) : 0};
+    };
+    std::optional<LogLine> best;
+    for (const auto& [name, disk] : files)
+        if (s.size() > name.size() && s.substr(0, name.size()) == name && s[name.size()] == ':')
+            if (auto l = at(name.size()); l && (!best || l->file.size() > best->file.size())) best = l;
+    if (best) return best;
+    for (size_t p = s.find(':'); p != std::string_view::npos; p = s.find(':', p + 1))
+        if (auto l = at(p)) return l;
+    return std::nullopt;
+}
+
+// The column of a message's culprit in its source line: its first quoted token, or for a
+// syntax error (which quotes nothing) the unexpected keyword, written in capitals.
+int culprit_column(const std::string& msg, const std::string& source) {
+    if (source.empty()) return 0;
+    if (size_t a = msg.find('\''); a != std::string::npos)
+        if (size_t b = msg.find('\'', a + 1); b != std::string::npos && b > a + 1)
+            if (size_t p = source.find(msg.substr(a + 1, b - a - 1)); p != std::string::npos) return static_cast<int>(p) + 1;
+    const std::string unexpected = "syntax error, unexpected ";
+    if (size_t u = msg.find(unexpected); u != std::string::npos) {
+        std::string word;
+        for (size_t k = u + unexpected.size(); k < msg.size() && (std::isupper(static_cast<unsigned char>(msg[k])) ||
+                                                                 std::isdigit(static_cast<unsigned char>(msg[k])) || msg[k] == '_'); ++k)
+            word += static_cast<char>(std::tolower(static_cast<unsigned char>(msg[k])));
+        if (size_t p = scan::find_word(source, word); p != std::string::npos) return static_cast<int>(p) + 1;
+    }
+    return 0;
+}
+
+// glslang's info log -> Error at path:line:col with the source line. `stage_files` names the
+// file of each stage, for link errors ("Linking vertex stage: Missing entry point"), which have
+// no line; `fallback_file` is blamed when nothing names one.
 Error parse_log(const std::string& log, Stage stage, const std::map<std::string, fs::path>& files,
-                const std::string& fallback_file) {
-    static const std::regex line_re(R"(^(ERROR|WARNING): (.+?):(\d+): (.*)$)");
+                const std::string& fallback_file, const std::map<Stage, std::string>& stage_files = {}) {
     std::vector<Error> errors;
     std::istringstream in(log);
     std::string line;
     std::vector<std::string> other;
+    std::string other_file = fallback_file;
+    Stage other_stage = stage;
     while (std::getline(in, line)) {
-        std::smatch m;
-        if (std::regex_match(line, m, line_re) && m[1] == "ERROR") {
-            std::string file = m[2], msg = m[4];
+        if (auto l = split_log_line(line, files)) {
+            std::string msg = l->message;
             while (!msg.empty() && msg.back() == ' ') msg.pop_back();
-            int ln = std::stoi(m[3]);
             Error e;
             e.message = std::string(stage_name(stage)) + " shader: " + msg;
-            auto f = files.find(file);
-            std::string disk = f != files.end() ? f->second.string() : file;
-            e.loc = {file, ln, 0};
-            e.source_line = read_source_line(disk, ln);
-            // Column: the first quoted token of the message, found in the source line.
-            static const std::regex tok(R"('([^']+)')");
-            std::smatch t;
-            if (std::regex_search(msg, t, tok) && !e.source_line.empty()) {
-                auto p = e.source_line.find(t[1].str());
-                if (p != std::string::npos) e.loc.col = static_cast<int>(p) + 1;
-            }
-            // Syntax errors quote nothing ("'' : syntax error, unexpected IF, expecting ..."):
-            // the unexpected token is a keyword written in capitals; find it as a word.
-            static const std::regex unexpected(R"(syntax error, unexpected ([A-Z_0-9]+))");
-            std::smatch u;
-            if (e.loc.col == 0 && std::regex_search(msg, u, unexpected) && !e.source_line.empty()) {
-                std::string word = u[1].str();
-                std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-                std::smatch w;
-                if (std::regex_search(e.source_line, w, std::regex("\\b" + word + "\\b")))
-                    e.loc.col = static_cast<int>(w.position(0)) + 1;
-                // The token is only where the parser noticed; the mistake is usually just before.
-                if (msg.find("expecting COMMA or SEMICOLON") != std::string::npos)
-                    e.hint = "a ';' is probably missing at the end of the statement before this line";
-            }
+            auto f = files.find(l->file);
+            std::string disk = f != files.end() ? f->second.string() : l->file;
+            e.loc = {l->file, l->line, 0};
+            e.source_line = read_source_line(disk, l->line);
+            e.loc.col = culprit_column(msg, e.source_line);
+            // The token is only where the parser noticed; the mistake is usually just before.
+            if (msg.find("syntax error") != std::string::npos && msg.find("expecting COMMA or SEMICOLON") != std::string::npos)
+                e.hint = "a ';' is probably missing at the end of the statement before this line";
             errors.push_back(std::move(e));
         } else if (line.rfind("ERROR: ", 0) == 0 && line.find("compilation errors") == std::string::npos) {
             other.push_back(line.substr(7));
+            for (const auto& [st, file] : stage_files)
+                if (other.size() == 1 && line.find(std::string("Linking ") + glslang_stage_name(st) + " stage:") != std::string::npos)
+                    other_file = file, other_stage = st;
         }
     }
     if (errors.empty()) {
-        Error e = make_error(std::string(stage_name(stage)) + " shader: " +
+        Error e = make_error(std::string(stage_name(other_stage)) + " shader: " +
                                  (other.empty() ? std::string("glslang failed without a message") : other.front()),
-                             {fallback_file, 0, 0});
+                             {other_file, 0, 0});
         for (size_t i = 1; i < other.size() && i < 10; ++i) e.notes.push_back(other[i]);
         return e;
     }
@@ -113,9 +157,9 @@ Error parse_log(const std::string& log, Stage stage, const std::map<std::string,
     return first;
 }
 
-// The line declaring the array with the most elements (`name[12345]`) among `files`.
-SourceLoc largest_array_declaration(const std::vector<fs::path>& files) {
-    static const std::regex decl(R"(\b[A-Za-z_]\w*\s*\[\s*(\d+)\s*\])");
+// The line declaring the array with the most elements (`name[12345]`) among `files`; with
+// `qualifier`, only lines that hold that word (`shared`).
+SourceLoc largest_array_declaration(const std::vector<fs::path>& files, std::string_view qualifier = {}) {
     SourceLoc best;
     unsigned long long most = 0;
     for (const auto& f : files) {
@@ -124,11 +168,20 @@ SourceLoc largest_array_declaration(const std::vector<fs::path>& files) {
         std::istringstream in(*text);
         std::string line;
         for (int n = 1; std::getline(in, line); ++n)
-            for (std::sregex_iterator it(line.begin(), line.end(), decl), end; it != end; ++it) {
-                unsigned long long count = std::stoull((*it)[1].str().substr(0, 18));
+            for (size_t open = qualifier.empty() || scan::find_word(line, qualifier) != std::string::npos ? line.find('[') : std::string::npos; open != std::string::npos; open = line.find('[', open + 1)) {
+                // identifier, blanks, '[', blanks, digits, blanks, ']'
+                size_t e = open;
+                while (e > 0 && scan::is_blank(line[e - 1])) --e;
+                size_t b = e;
+                while (b > 0 && scan::is_word_char(line[b - 1])) --b;
+                if (b == e || std::isdigit(static_cast<unsigned char>(line[b]))) continue;
+                size_t d = scan::skip_blanks(line, open + 1), d_end = d;
+                while (d_end < line.size() && std::isdigit(static_cast<unsigned char>(line[d_end]))) ++d_end;
+                if (d_end == d || scan::skip_blanks(line, d_end) >= line.size() || line[scan::skip_blanks(line, d_end)] != ']') continue;
+                unsigned long long count = scan::parse_decimal(std::string_view(line).substr(d, d_end - d), ~0ull).value_or(~0ull);
                 if (count > most) {
                     most = count;
-                    best = {display_path(f), n, static_cast<int>(it->position(0)) + 1};
+                    best = {display_path(f), n, static_cast<int>(b) + 1};
                 }
             }
     }
@@ -168,13 +221,13 @@ Result<Program> compile_program(const std::vector<StageInput>& stages, const Com
         if (auto sp = opt.stage_preamble.find(st.stage); sp != opt.stage_preamble.end()) injected += sp->second;
         auto ex = expand_source(disk, text, shown, injected, opt.include_dirs);
         if (!ex) return ex.error();
-        if (!disk.empty()) shown_to_disk[shown] = disk;
+        if (!disk.empty()) shown_to_disk[line_name(shown)] = disk;
         for (const auto& f : ex->files) {
-            shown_to_disk[display_path(f)] = f;
+            shown_to_disk[line_name(display_path(f))] = f;
             prog.dependencies.push_back(f);
         }
         texts.push_back(std::move(ex->text));
-        shown_names.push_back(shown);
+        shown_names.push_back(line_name(shown));
     }
 
     // Cache lookup: every expanded text plus stage kinds.
@@ -207,8 +260,11 @@ Result<Program> compile_program(const std::vector<StageInput>& stages, const Com
             program.addShader(sh.get());
             shaders.push_back(std::move(sh));
         }
-        if (!program.link(msgs) || !program.mapIO())
-            return parse_log(program.getInfoLog(), stages.back().stage, shown_to_disk, shown_names.back());
+        if (!program.link(msgs) || !program.mapIO()) {
+            std::map<Stage, std::string> stage_files;
+            for (size_t i = 0; i < stages.size(); ++i) stage_files[stages[i].stage] = shown_names[i];
+            return parse_log(program.getInfoLog(), stages.back().stage, shown_to_disk, shown_names.back(), stage_files);
+        }
         for (size_t i = 0; i < stages.size(); ++i) {
             StageSpirv out{stages[i].stage, {}};
             glslang::SpvOptions so;
@@ -237,6 +293,24 @@ Result<Program> compile_program(const std::vector<StageInput>& stages, const Com
             e.hint = "large arrays belong in a storage buffer ([buffers]), not in a local variable";
             return e;
         }
+    }
+
+    for (size_t i = 0; i < prog.stages.size(); ++i) {
+        if (prog.stages[i].stage != Stage::compute) continue;
+        uint64_t bytes = workgroup_memory_bytes(prog.stages[i].words);
+        prog.reflection.shared_bytes = bytes;
+        // Beyond the guaranteed minimum some device may refuse it: remember where it is declared.
+        if (bytes > 16384) prog.reflection.shared_decl = largest_array_declaration(prog.dependencies, "shared");
+        if (bytes <= opt.max_shared_bytes) continue;
+        Error e = make_error("compute shader declares " + std::to_string(bytes) + " bytes of shared memory; no Vulkan device offers more than " +
+                                 std::to_string(opt.max_shared_bytes) + " (maxComputeSharedMemorySize)",
+                             {shown_names[i], 0, 0});
+        if (prog.reflection.shared_decl.known()) {
+            e.loc = prog.reflection.shared_decl;
+            e.source_line = read_source_line(e.loc.file, e.loc.line);
+        }
+        e.hint = "a large array shared by the workgroup belongs in a storage buffer ([buffers])";
+        return e;
     }
 
     // Reflection merged across stages.

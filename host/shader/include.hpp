@@ -25,4 +25,9 @@ Result<std::string> read_text(const std::filesystem::path& file);
 // A path as shown in messages: relative to the working directory when possible.
 std::string display_path(const std::filesystem::path& p);
 
+// `name` as it can stand inside #line "..." (and glslang's messages): a quote, backslash or
+// control character (a folder name with a newline) is replaced by '?', since it would end the
+// directive and put the error inside the passlab preamble.
+std::string line_name(const std::string& name);
+
 } // namespace pl::shader

@@ -54,6 +54,10 @@ struct Reflection {
     uint32_t local_size[3] = {1, 1, 1};  // compute only
     std::vector<uint32_t> vertex_input_locations;  // vertex stage inputs (location numbers)
     uint32_t fragment_output_count = 0;  // highest fragment output location + 1
+    // Compute only: bytes of `shared` variables, and where the largest is declared (the
+    // device's maxComputeSharedMemorySize is checked against it when a pipeline is made).
+    uint64_t shared_bytes = 0;
+    SourceLoc shared_decl;
     const Binding* find(const std::string& name) const;
 };
 
@@ -77,6 +81,10 @@ struct CompileOptions {
     std::filesystem::path cache_dir;
     // Refuse shaders whose private + function-local memory per invocation exceeds this.
     uint64_t max_private_bytes = 64 * 1024;
+    // Refuse compute shaders whose `shared` memory exceeds this before any device is asked: no
+    // Vulkan device offers more than 64 KiB (the guaranteed minimum is 16 KiB). The device's
+    // own limit is checked when the pipeline is created.
+    uint64_t max_shared_bytes = 64 * 1024;
 };
 
 struct StageSpirv {
@@ -103,5 +111,7 @@ Result<Reflection> reflect_spirv(const std::vector<uint32_t>& words, Stage stage
 
 // Estimated bytes of Private + Function storage per invocation (arrays included).
 uint64_t private_memory_bytes(const std::vector<uint32_t>& words);
+// Bytes of Workgroup storage (`shared` variables).
+uint64_t workgroup_memory_bytes(const std::vector<uint32_t>& words);
 
 } // namespace pl::shader

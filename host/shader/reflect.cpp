@@ -22,7 +22,7 @@ enum : uint32_t {
 };
 enum : uint32_t { DecBlock = 2, DecBufferBlock = 3, DecBuiltIn = 11, DecNonWritable = 24, DecNonReadable = 25,
                   DecLocation = 30, DecBinding = 33, DecDescriptorSet = 34, DecOffset = 35 };
-enum : uint32_t { SCUniformConstant = 0, SCInput = 1, SCUniform = 2, SCOutput = 3, SCPrivate = 6,
+enum : uint32_t { SCUniformConstant = 0, SCInput = 1, SCUniform = 2, SCOutput = 3, SCWorkgroup = 4, SCPrivate = 6,
                   SCFunction = 7, SCPushConstant = 9, SCStorageBuffer = 12 };
 enum : uint32_t { ModeLocalSize = 17, ModeLocalSizeId = 38 };
 
@@ -144,12 +144,15 @@ const char* format_name(uint32_t f) {
 
 } // namespace
 
-uint64_t private_memory_bytes(const std::vector<uint32_t>& words) {
+namespace {
+
+// Bytes of every variable in one of `classes`, saturating at UINT64_MAX.
+uint64_t memory_bytes(const std::vector<uint32_t>& words, std::initializer_list<uint32_t> classes) {
     auto m = parse(words);
     if (!m) return 0;
     uint64_t total = 0;
     for (const auto& v : m->vars) {
-        if (v.storage != SCPrivate && v.storage != SCFunction) continue;
+        if (std::find(classes.begin(), classes.end(), v.storage) == classes.end()) continue;
         const Type* p = type(*m, v.type);
         if (!p || p->op != OpTypePointer) continue;
         uint64_t s = size_of(*m, p->args[1]);
@@ -157,6 +160,12 @@ uint64_t private_memory_bytes(const std::vector<uint32_t>& words) {
     }
     return total;
 }
+
+} // namespace
+
+uint64_t private_memory_bytes(const std::vector<uint32_t>& words) { return memory_bytes(words, {SCPrivate, SCFunction}); }
+
+uint64_t workgroup_memory_bytes(const std::vector<uint32_t>& words) { return memory_bytes(words, {SCWorkgroup}); }
 
 Result<Reflection> reflect_spirv(const std::vector<uint32_t>& words, Stage stage) {
     auto parsed = parse(words);

@@ -5,9 +5,17 @@ namespace fs = std::filesystem;
 namespace pl {
 
 std::optional<fs::path> path_within(const fs::path& p, const fs::path& dir) {
-    auto rel = fs::weakly_canonical(p).lexically_relative(fs::weakly_canonical(dir));
+    auto rel = canonical_or_normal(p).lexically_relative(canonical_or_normal(dir));
     if (rel.empty() || rel == "." || *rel.begin() == "..") return std::nullopt;
     return rel;
+}
+
+fs::path canonical_or_normal(const fs::path& p) {
+    std::error_code ec;
+    fs::path c = fs::weakly_canonical(p, ec);
+    if (!ec) return c;
+    fs::path a = fs::absolute(p, ec);
+    return (ec ? p : a).lexically_normal();
 }
 
 } // namespace pl

@@ -10,4 +10,8 @@ namespace pl {
 // "..": never match by spelling alone); nullopt otherwise, and for `dir` itself.
 std::optional<std::filesystem::path> path_within(const std::filesystem::path& p, const std::filesystem::path& dir);
 
+// weakly_canonical without exceptions: on failure (a symlink loop, a name longer than NAME_MAX)
+// the lexically normal absolute path, so identity checks still work and nothing aborts.
+std::filesystem::path canonical_or_normal(const std::filesystem::path& p);
+
 } // namespace pl

@@ -22,6 +22,14 @@ const char* result_name(VkResult r) {
 }
 
 void fail(const char* call, VkResult r, const char* file, int line) {
+    if (r == VK_ERROR_OUT_OF_DEVICE_MEMORY || r == VK_ERROR_OUT_OF_HOST_MEMORY) {
+        // Not a bug: the machine ran out (resource sizes are checked against the heap before
+        // allocating, but a process memory limit or other programs can still make it fail).
+        std::fprintf(stderr, "passlab: error: out of memory: %s returned %s\n    hint: make the images or buffers smaller (--size, size expressions)\n",
+                     call, result_name(r));
+        std::fflush(stderr);
+        std::_Exit(3);  // the exit code of environment errors (docs/cli.md)
+    }
     std::fprintf(stderr, "passlab: internal Vulkan failure: %s returned %s (%d) at %s:%d\n", call,
                  result_name(r), static_cast<int>(r), file, line);
     std::abort();

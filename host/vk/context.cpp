@@ -1,5 +1,6 @@
 #include "vk/context.hpp"
 
+#include "util/scan.hpp"
 #include "vk/check.hpp"
 
 #include <algorithm>
@@ -186,8 +187,10 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& opt) {
     if (!want.empty()) {
         bool found = false;
         bool numeric = std::all_of(want.begin(), want.end(), ::isdigit);
+        // Checked: an index too large for any integer matches no device (std::stoul threw).
+        auto index = scan::parse_decimal(want, usable.size());
         for (size_t i = 0; i < usable.size(); ++i) {
-            if ((numeric && std::stoul(want) == i) ||
+            if ((numeric && index && *index == i) ||
                 (!numeric && names[i].find(want) != std::string::npos)) {
                 chosen = i;
                 found = true;
@@ -394,14 +397,21 @@ uint32_t Context::memory_type(uint32_t type_bits, VkMemoryPropertyFlags wanted) 
     fail("memory_type", VK_ERROR_OUT_OF_DEVICE_MEMORY, __FILE__, __LINE__);
 }
 
-Status Context::wait(VkFence fence, std::chrono::milliseconds timeout, const std::string& what) {
+VkDeviceSize Context::largest_device_heap() const {
+    VkDeviceSize best = 0;
+    for (uint32_t i = 0; i < mem_props_.memoryHeapCount; ++i)
+        if (mem_props_.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) best = std::max(best, mem_props_.memoryHeaps[i].size);
+    return best;
+}
+
+Status Context::wait(VkFence fence, std::chrono::milliseconds timeout, const std::string& what, const std::string& cause) {
     uint64_t ns = static_cast<uint64_t>(timeout.count()) * 1000000ull;
     VkResult r = vkWaitForFences(device_, 1, &fence, VK_TRUE, ns);
     if (r == VK_TIMEOUT) {
         hung_ = true;
         Error e = make_error(what + " did not finish within " +
                              std::to_string(timeout.count() / 1000.0).substr(0, 5) +
-                             " s: a shader probably runs away (endless or very long loop)");
+                             " s: " + cause);
         e.hint = "raise the limit with --timeout SECONDS if the work is really that long";
         return e;
     }

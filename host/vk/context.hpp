@@ -70,6 +70,8 @@ class Context {
     bool hung() const { return hung_; }
 
     uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags wanted) const;
+    // Bytes of the largest device-local memory heap (all of system memory on a CPU driver).
+    VkDeviceSize largest_device_heap() const;
 
     // Validation messages seen so far (warnings and errors); each is prefixed with the label
     // current when it arrived (the pass being recorded).
@@ -81,8 +83,9 @@ class Context {
     // A timeout is a user error (a runaway shader), reported as such.
     Status run_once(const std::function<void(VkCommandBuffer)>& record,
                     std::chrono::milliseconds timeout = std::chrono::seconds(30));
-    // Waits for `fence` with a watchdog; the error names `what`.
-    Status wait(VkFence fence, std::chrono::milliseconds timeout, const std::string& what);
+    // Waits for `fence` with a watchdog; the error names `what` and the likely `cause`.
+    Status wait(VkFence fence, std::chrono::milliseconds timeout, const std::string& what,
+                const std::string& cause = "a shader probably runs away (endless or very long loop)");
 
     // Deferred destruction: `object` stays alive until the GPU work submitted so far is done
     // (collect() is called after each fence wait). A reload never frees what a frame still uses.

@@ -4,11 +4,14 @@
 file(STRINGS "${CASE_DIR}/expect.txt" lines)
 set(expected_exit "")
 set(substrings "")
+set(env_args "")
 foreach(line IN LISTS lines)
   if(line MATCHES "^args: (.*)$")
     set(args_text "${CMAKE_MATCH_1}")
   elseif(line MATCHES "^exit: ([0-9]+)$")
     set(expected_exit "${CMAKE_MATCH_1}")
+  elseif(line MATCHES "^env: (.*)$")
+    list(APPEND env_args "${CMAKE_MATCH_1}")
   elseif(line MATCHES "^stderr: (.*)$")
     list(APPEND substrings "${CMAKE_MATCH_1}")
   endif()
@@ -17,7 +20,7 @@ file(RELATIVE_PATH rel_dir "${WORK_DIR}" "${CASE_DIR}")
 string(REPLACE "{dir}" "${rel_dir}" args_text "${args_text}")
 string(REPLACE "{out}" "${OUT_DIR}" args_text "${args_text}")
 separate_arguments(args UNIX_COMMAND "${args_text}")
-execute_process(COMMAND "${PASSLAB}" ${args}
+execute_process(COMMAND ${CMAKE_COMMAND} -E env ${env_args} "${PASSLAB}" ${args}
                 WORKING_DIRECTORY "${WORK_DIR}"
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
                 TIMEOUT 60)

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
 
+#include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -116,4 +118,44 @@ TEST(Camera, Conventions) {
     EXPECT_LT(up.y / up.w, 0.0f);
     glm::vec4 right = vp * glm::vec4(0.5f, 0, 0, 1);
     EXPECT_GT(right.x / right.w, 0.0f);
+}
+
+// A face of 200,000 corners hung tinyobjloader's triangulation (quadratic); with the host's own
+// (a linear fan) it is refused at once, since the reader counts corners in a byte; a face of
+// 200 corners is fanned. Quads still split along the shorter diagonal.
+TEST(ObjLoad, LargeFacesAreFannedOrRefusedNotHung) {
+    auto dir = std::filesystem::temp_directory_path() / "passlab_obj_huge_face";
+    std::filesystem::create_directories(dir);
+    auto polygon = [&](const std::string& name, int n) {
+        std::ofstream f(dir / name);
+        for (int i = 0; i < n; ++i) {
+            double a = 6.283185307179586 * i / n;
+            f << "v " << std::cos(a) << " " << std::sin(a) << " 0\n";
+        }
+        f << "f";
+        for (int i = 1; i <= n; ++i) f << " " << i;
+        f << "\n";
+    };
+    polygon("huge.obj", 200000);
+    auto t0 = std::chrono::steady_clock::now();
+    auto m = load_mesh(dir / "huge.obj");
+    double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ASSERT_FALSE(m);
+    EXPECT_NE(m.error().message.find("256 or more corners"), std::string::npos) << m.error().format();
+    EXPECT_LT(s, 20.0);  // a hang guard, not a timing test
+    polygon("200.obj", 200);
+    auto p = load_mesh(dir / "200.obj");
+    ASSERT_TRUE(p) << p.error().format();
+    EXPECT_EQ(p->indices.size(), size_t(3) * 198);
+    {
+        std::ofstream f(dir / "quad.obj");
+        // The diagonal 0-2 is shorter than 1-3: triangles (0,1,2), (0,2,3).
+        f << "v 0 0 0\nv 4 0 0\nv 1 1 0\nv 0 4 0\nf 1 2 3 4\n";
+    }
+    auto q = load_mesh(dir / "quad.obj");
+    ASSERT_TRUE(q) << q.error().format();
+    ASSERT_EQ(q->indices.size(), 6u);
+    EXPECT_FLOAT_EQ(P(q->vertices[q->indices[3]]).x, 0.0f);
+    EXPECT_FLOAT_EQ(P(q->vertices[q->indices[4]]).x, 1.0f);  // corner 2 (1, 1) starts the second
+    std::filesystem::remove_all(dir);
 }
