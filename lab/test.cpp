@@ -1,6 +1,7 @@
 // `passlab test`: runs the [[test]] cases of presets headlessly under the validation layer and
 // prints one line per case and a closing summary. Exit 1 if any case fails.
 #include "verbs.hpp"
+#include "sources.hpp"
 
 #include "check/checks.hpp"
 #include "report.hpp"
@@ -66,7 +67,7 @@ int test(const TestOptions& o, const CommonOptions& c) {
             }
             (r.passed ? passed : failed)++;
             std::printf("%s %s: %s (%.0f ms)\n", r.passed ? "PASS" : "FAIL", where.c_str(), r.name.c_str(), r.ms);
-            if (!r.error.empty()) std::printf("%s", r.error.c_str());
+            if (!r.error.empty()) std::printf("%s", map_scratch_text(r.error).c_str());
             for (const auto& ch : r.checks)
                 if (!ch.passed || o.verbose)
                     std::printf("    %s %s: %s\n", ch.passed ? "ok  " : "FAIL", ch.what.c_str(), ch.detail.c_str());

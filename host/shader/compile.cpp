@@ -5,6 +5,7 @@
 #include "shader/bindings.hpp"
 #include "shader/cache.hpp"
 #include "shader/include.hpp"
+#include "shader/entry.hpp"
 #include "shader/program.hpp"
 
 #include <glslang/Public/ResourceLimits.h>
@@ -173,6 +174,7 @@ Result<Program> compile_program(const std::vector<StageInput>& stages, const Com
             shown_to_disk[display_path(f)] = f;
             prog.dependencies.push_back(f);
         }
+        if (st.stage == Stage::fragment) ex->text += main_image_entry(ex->text);
         texts.push_back(std::move(ex->text));
         shown_names.push_back(shown);
     }
