@@ -47,7 +47,7 @@ Result<fs::path> resolve_source(const std::string& arg) {
         return e;
     }
     ScratchImport si;
-    si.source = fs::absolute(arg);
+    si.source = arg;  // as the user wrote it: errors in the JSON name it that way
     si.dir = tmpl;
     si.options.golden = false;  // a golden recorded into a scratch folder would compare nothing
     registry().imports.push_back(si);
@@ -65,15 +65,26 @@ Status reimport(ScratchImport& si) {
 }
 
 std::string map_scratch_text(std::string s) {
+    std::error_code ec;
     for (const auto& si : registry().imports) {
-        const std::string dir = si.dir.string() + "/";
-        for (const auto& [file, origin] : si.origins) {
-            const std::string full = dir + file;
-            for (size_t at; (at = s.find(full)) != std::string::npos;) s.replace(at, full.size(), origin);
+        // The compiler shows files relative to the working folder when it can: map that form
+        // and the absolute one (longest first: the relative form ends with the absolute tail).
+        for (const fs::path& dir : {fs::proximate(si.dir, ec), si.dir}) {
+            const std::string prefix = dir.string() + "/";
+            for (const auto& [file, origin] : si.origins) {
+                const std::string full = prefix + file;
+                const std::string shown = fs::path(origin).is_absolute() ? fs::proximate(origin, ec).string() : origin;
+                for (size_t at; (at = s.find(full)) != std::string::npos;) s.replace(at, full.size(), shown);
+            }
         }
-        for (size_t at; (at = s.find(dir)) != std::string::npos;) s.replace(at, dir.size(), "");
     }
     return s;
+}
+
+std::string preset_name(const fs::path& dir) {
+    for (const auto& si : registry().imports)
+        if (fs::path(dir).lexically_normal() == si.dir.lexically_normal()) return si.source.stem().string();
+    return dir.filename().string();
 }
 
 Error map_scratch_error(Error e) {

@@ -31,5 +31,8 @@ Status reimport(ScratchImport& si);
 // Replaces scratch paths in an error by the user's tab or file.
 Error map_scratch_error(Error e);
 std::string map_scratch_text(std::string s);
+// The name a preset folder is shown and saved by: the source's stem for a scratch import
+// (`render toy.json` writes toy.png), else the folder's name.
+std::string preset_name(const std::filesystem::path& dir);
 
 } // namespace pl::lab

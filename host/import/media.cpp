@@ -45,7 +45,7 @@ MediaImage media_image(const Channel& c, const std::string& name, const std::str
     case ChannelKind::keyboard:
         // Shadertoy's keyboard texture: 256 keys x 3 rows (down, pressed this frame, toggled).
         m.image = "{ generator = \"constant\", size = [256, 3], args = { value = [0, 0, 0, 0] }, sampler = { filter = \"nearest\", address = \"clamp\" } }";
-        warn("the keyboard", "all keys up (live keyboard input is not supported yet)");
+        m.warning = where + ": the keyboard is replaced by all keys up (live keyboard input is not supported yet)";
         break;
     case ChannelKind::video:
     case ChannelKind::webcam:

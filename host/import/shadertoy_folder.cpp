@@ -20,14 +20,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-Result<std::string> read_file(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    if (!in) return make_error("cannot read '" + p.string() + "'");
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 SourceLoc loc_of(const toml::node& n, const std::string& file) {
     return {file, static_cast<int>(n.source().begin.line), static_cast<int>(n.source().begin.column)};
 }
@@ -127,7 +119,7 @@ Status read_manifest(const fs::path& dir, Toy& toy) {
     std::error_code ec;
     if (!fs::exists(mf, ec)) return ok_status();
     const std::string file = mf.string();
-    auto text = read_file(mf);
+    auto text = read_text_file(mf);
     if (!text) return text.error();
     toml::table root;
     try {
@@ -169,7 +161,7 @@ Status read_manifest(const fs::path& dir, Toy& toy) {
 }
 
 Result<Tab> read_tab(const fs::path& p, TabKind kind, int index, const std::string& label) {
-    auto text = read_file(p);
+    auto text = read_text_file(p);
     if (!text) return text.error();
     Tab t;
     t.kind = kind;
@@ -177,7 +169,7 @@ Result<Tab> read_tab(const fs::path& p, TabKind kind, int index, const std::stri
     t.label = label;
     t.file = p.filename().string();
     t.code = glsl_es_to_450(*text);
-    t.origin = p.string();
+    t.origin = fs::absolute(p).lexically_normal().string();
     return t;
 }
 

@@ -144,11 +144,9 @@ Result<Tab> read_pass(const JsonSource& js, const json& rp, size_t k) {
 } // namespace
 
 Result<Toy> read_shadertoy_json(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return make_error("cannot read '" + file.string() + "'");
-    std::stringstream ss;
-    ss << in.rdbuf();
-    JsonSource js{file.string(), clean_text(ss.str())};
+    auto text = read_text_file(file);
+    if (!text) return text.error();
+    JsonSource js{file.string(), clean_text(*text)};
     json root;
     try {
         root = json::parse(js.text);

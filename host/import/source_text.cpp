@@ -2,8 +2,18 @@
 
 #include <cctype>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
 namespace pl::import {
+
+Result<std::string> read_text_file(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    if (!in) return make_error("cannot read '" + p.string() + "'");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
 
 std::string clean_text(std::string s) {
     if (s.rfind("\xEF\xBB\xBF", 0) == 0) s.erase(0, 3);

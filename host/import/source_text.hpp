@@ -3,11 +3,16 @@
 // Every rewrite keeps the line count, so errors point at the user's lines.
 #pragma once
 
+#include "util/error.hpp"
+
+#include <filesystem>
 #include <string>
 #include <vector>
 
 namespace pl::import {
 
+// The bytes of a file (a located error when it cannot be read).
+Result<std::string> read_text_file(const std::filesystem::path& p);
 // BOM dropped, CRLF and lone CR turned into LF.
 std::string clean_text(std::string s);
 // clean_text, then `#version` lines blanked and words reserved by Vulkan GLSL 4.50 renamed

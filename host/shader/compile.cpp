@@ -4,8 +4,8 @@
 // token; SPIR-V is reflected and guarded against absurd private memory.
 #include "shader/bindings.hpp"
 #include "shader/cache.hpp"
-#include "shader/include.hpp"
 #include "shader/entry.hpp"
+#include "shader/include.hpp"
 #include "shader/program.hpp"
 
 #include <glslang/Public/ResourceLimits.h>

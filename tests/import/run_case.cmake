@@ -1,5 +1,7 @@
 # One import case: passlab import CASE_DIR/src* -o OUT_DIR, append tests.toml, passlab test.
+# (src.vs beside src.fs is the ISF vertex companion, not a second source.)
 file(GLOB src LIST_DIRECTORIES true "${CASE_DIR}/src*")
+list(FILTER src EXCLUDE REGEX "\\.vs$")  # an ISF vertex companion goes with its .fs
 list(LENGTH src n)
 if(NOT n EQUAL 1)
   message(FATAL_ERROR "${CASE_DIR}: expected exactly one src* source, found ${n}")
