@@ -58,7 +58,7 @@ int render(const RenderOptions& o, const CommonOptions& c) {
     double t_device = ms_since(t1);
 
     auto t2 = Clock::now();
-    const std::string name = preset_name(built->desc.dir);
+    const std::string stem = preset_name(built->desc.dir);
     auto ex = exec::Executor::create(**ctx, std::move(built.value()));
     if (!ex) return report(ex.error());
     (*ex)->set_timeout(std::chrono::milliseconds(static_cast<long long>(c.timeout_s * 1000)));
@@ -95,7 +95,7 @@ int render(const RenderOptions& o, const CommonOptions& c) {
         const vk::FormatInfo* fi = vk::find_format(d->format);
         bool hdr = fi && (fi->bytes_per_texel / std::max(1, fi->components)) >= 2 && !fi->is_integer;
         std::string ext = o.format.empty() ? (hdr ? "exr" : "png") : o.format;
-        fs::path file = fs::path(o.out_dir) / (name + (k == 0 ? "" : "." + name) + "." + ext);
+        fs::path file = fs::path(o.out_dir) / (stem + (k == 0 ? "" : "." + name) + "." + ext);
         if (auto s = image::save_image(*img, file); !s) return report(s.error());
         std::printf("%s\n", file.string().c_str());
     }

@@ -279,8 +279,8 @@ int run(const RunOptions& o, const CommonOptions& c) {
                 if (next_ex)
                     if (auto a = (*next_ex)->adopt_contents(*current); !a) next_ex = a.error();
                 if (!next_ex) {
-                    const Error& e = next_ex.error();
-                    std::fputs(map_scratch_error(e).format().c_str(), stderr);
+                    const Error e = map_scratch_error(next_ex.error());  // an import's tab, not its scratch copy
+                    std::fputs(e.format().c_str(), stderr);
                     std::fprintf(stderr, "passlab: keeping the last good frame\n");
                     log.write("reload-failed", "\"file\":" + json_string(e.loc.file) + ",\"line\":" + std::to_string(e.loc.line) +
                                                    ",\"col\":" + std::to_string(e.loc.col) + ",\"pass\":" + json_string(e.pass) +
