@@ -1,6 +1,7 @@
 // `passlab check`: everything up to (not including) the GPU: parse, validate, compile, reflect,
 // bind by name, plan. Needs no Vulkan device, so it runs anywhere and fast.
 #include "verbs.hpp"
+#include "sources.hpp"
 
 #include "check_json.hpp"
 #include "exec/build.hpp"
@@ -20,7 +21,7 @@ int check(const std::string& preset, const std::vector<std::string>& set, const 
     if (!json_file.empty() && json_file != "-")
         if (auto s = check_output_file(json_file, "--json"); !s) return report(s.error());
     auto t0 = std::chrono::steady_clock::now();
-    auto toml = exec::resolve_preset(preset);
+    auto toml = resolve_source(preset);
     if (!toml) return report(toml.error());
     exec::BuildOptions bo;
     bo.set = set;

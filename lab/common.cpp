@@ -1,4 +1,5 @@
 #include "verbs.hpp"
+#include "sources.hpp"
 
 #include "util/files.hpp"
 #include "util/paths.hpp"
@@ -16,7 +17,7 @@
 namespace pl::lab {
 
 int report(const Error& e) {
-    std::fputs(e.format().c_str(), stderr);
+    std::fputs(map_scratch_error(e).format().c_str(), stderr);
     return static_cast<int>(e.code);
 }
 
@@ -69,7 +70,7 @@ Result<LoadedPreset> resolve_and_configure(const std::string& preset, const std:
                                            const std::vector<std::string>& set, const CommonOptions& c) {
     auto parsed = parse_size(size);
     if (!parsed) return parsed.error();
-    auto toml = exec::resolve_preset(preset);
+    auto toml = resolve_source(preset);
     if (!toml) return toml.error();
     LoadedPreset lp;
     lp.toml = *toml;
@@ -87,14 +88,14 @@ Result<std::vector<std::filesystem::path>> collect_presets(const std::string& ar
     namespace fs = std::filesystem;
     std::error_code ec;
     std::vector<fs::path> out;
-    if (fs::is_directory(arg, ec) && !fs::exists(fs::path(arg) / "preset.toml", ec)) {
+    if (fs::is_directory(arg, ec) && !fs::exists(fs::path(arg) / "preset.toml", ec) && !import::detect_source(arg)) {
         for (const auto& f : files_under(arg))
             if (f.filename() == "preset.toml") out.push_back(canonical_or_normal(f));
         std::sort(out.begin(), out.end());
         if (out.empty()) return make_error("no preset.toml under '" + arg + "'");
         return out;
     }
-    auto p = exec::resolve_preset(arg);
+    auto p = resolve_source(arg);  // a preset, or a Shadertoy/ISF source imported into a scratch folder
     if (!p) return p.error();
     out.push_back(*p);
     return out;

@@ -1,5 +1,6 @@
 // `passlab graph PRESET --dot`: the pass graph with shader-derived reads and writes.
 #include "verbs.hpp"
+#include "sources.hpp"
 
 #include "exec/build.hpp"
 #include "graph/dot.hpp"
@@ -9,7 +10,7 @@
 namespace pl::lab {
 
 int graph_dot(const std::string& preset, const CommonOptions& c) {
-    auto toml = exec::resolve_preset(preset);
+    auto toml = resolve_source(preset);
     if (!toml) return report(toml.error());
     exec::BuildOptions bo;
     bo.cache_dir = cache_dir(c);

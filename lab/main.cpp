@@ -168,6 +168,13 @@ int main(int argc, char** argv) {
     mutate_cmd->add_option("--json", mo.json, "Write every mutant and its outcome to FILE");
     add_common(mutate_cmd);
 
+    ImportVerbOptions io;
+    auto* import_cmd = app.add_subcommand("import", "Turn a Shadertoy or ISF shader into a preset folder (never overwrites)");
+    import_cmd->add_option("source", io.source, "Shadertoy .json, .glsl/.frag with mainImage, a folder of tabs, or an ISF .fs")->required();
+    import_cmd->add_option("-o,--out", io.dest, "New preset folder (must not exist)")->required();
+    import_cmd->add_option("--kind", io.kind, "Force the source family")->check(CLI::IsMember({"shadertoy", "isf"}));
+    import_cmd->add_flag("!--no-golden", io.golden, "Do not add the [[test]] golden case");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -187,6 +194,7 @@ int main(int argc, char** argv) {
     if (new_cmd->parsed()) return new_preset(no, common);
     if (grade_cmd->parsed()) return grade(go, common);
     if (mutate_cmd->parsed()) return mutate(mo, common);
+    if (import_cmd->parsed()) return import_source(io);
     return 2;
     };
     try {

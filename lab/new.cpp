@@ -8,6 +8,7 @@
 //
 // Never overwrites: DEST must not exist (the host writes user files only where asked).
 #include "verbs.hpp"
+#include "sources.hpp"
 #include "util/paths.hpp"
 
 #include <cstdio>
@@ -41,7 +42,7 @@ int new_preset(const NewOptions& o, const CommonOptions& c) {
         return report(usage_error("passlab new: '" + dest.string() +
                                   "' already exists; passlab never overwrites files (choose a new folder)"));
 
-    auto toml = exec::resolve_preset(o.from);
+    auto toml = resolve_source(o.from);
     if (!toml) return report(toml.error());
     const fs::path src = toml->parent_path();
 

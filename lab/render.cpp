@@ -2,6 +2,7 @@
 // is at --time. The output image (and every --pass image) is written as PNG for 8-bit formats
 // and EXR for float formats, named <preset>[.<image>].<ext> in the output folder.
 #include "verbs.hpp"
+#include "sources.hpp"
 
 #include "exec/build.hpp"
 #include "exec/executor.hpp"
@@ -57,7 +58,7 @@ int render(const RenderOptions& o, const CommonOptions& c) {
     double t_device = ms_since(t1);
 
     auto t2 = Clock::now();
-    std::string preset_name = built->desc.dir.filename().string();
+    const std::string stem = preset_name(built->desc.dir);
     auto ex = exec::Executor::create(**ctx, std::move(built.value()));
     if (!ex) return report(ex.error());
     (*ex)->set_timeout(timeout(c));
@@ -94,7 +95,7 @@ int render(const RenderOptions& o, const CommonOptions& c) {
         const vk::FormatInfo* fi = vk::find_format(d->format);
         bool hdr = fi && (fi->bytes_per_texel / std::max(1, fi->components)) >= 2 && !fi->is_integer;
         std::string ext = o.format.empty() ? (hdr ? "exr" : "png") : o.format;
-        fs::path file = fs::path(o.out_dir) / (preset_name + (k == 0 ? "" : "." + name) + "." + ext);
+        fs::path file = fs::path(o.out_dir) / (stem + (k == 0 ? "" : "." + name) + "." + ext);
         if (auto s = image::save_image(*img, file); !s) return report(s.error());
         std::printf("%s\n", file.string().c_str());
     }

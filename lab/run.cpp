@@ -4,6 +4,7 @@
 // rendering and shows the error in an overlay and the terminal; `--events FILE` logs JSON lines
 // (reload-started, reload-ok, reload-failed, frame-presented) so tests can follow what happened.
 #include "verbs.hpp"
+#include "sources.hpp"
 
 #include "events.hpp"
 #include "exec/build.hpp"
@@ -177,7 +178,22 @@ int run(const RunOptions& o, const CommonOptions& c) {
     std::array<int, 2> pending_size{0, 0};  // a window size waiting to settle
     std::array<int, 2> built_size = built->view;
     auto resize_at = std::chrono::steady_clock::now();
-    watcher.watch(built->dependencies);
+    // An imported source (Shadertoy, ISF) runs from its scratch folder; its own files are watched
+    // too, and a change imports it again before the rebuild.
+    auto watch_all = [&](std::vector<fs::path> deps) {
+        for (const auto& si : scratch_imports()) deps.insert(deps.end(), si.inputs.begin(), si.inputs.end());
+        watcher.watch(deps);
+    };
+    auto reimport_changed = [&](const std::set<fs::path>& changed) {
+        for (const auto& si : scratch_imports())
+            for (const auto& f : changed)
+                if (std::find(si.inputs.begin(), si.inputs.end(), fs::absolute(f)) != si.inputs.end()) {
+                    ScratchImport copy = si;
+                    if (auto s = reimport(copy); !s) std::fputs(map_scratch_error(s.error()).format().c_str(), stderr);
+                    break;
+                }
+    };
+    watch_all(built->dependencies);
     auto ex = exec::Executor::create(**ctx, std::move(built.value()), &pipelines);
     if (!ex) return report(ex.error());
     if (auto s = (*ex)->check_showable((*ex)->graph().desc.output); !s) return report(s.error());
@@ -223,7 +239,12 @@ int run(const RunOptions& o, const CommonOptions& c) {
             camera.yaw -= static_cast<float>(input.drag_dx) * 0.3f;
             camera.pitch = std::clamp(camera.pitch + static_cast<float>(input.drag_dy) * 0.3f, -89.0f, 89.0f);
             camera.distance = std::clamp(camera.distance * static_cast<float>(std::pow(0.9, input.scroll)), 0.01f, 1e4f);
-            if (input.left) mouse = glm::vec4(input.x, input.y, input.click_x, input.click_y);
+            // Shadertoy's convention (since 2020): w > 0 only on the frame of the click.
+            if (input.left) {
+                const bool click_frame = mouse.z <= 0.0f || mouse.z != static_cast<float>(input.click_x) ||
+                                         std::fabs(mouse.w) != static_cast<float>(input.click_y);
+                mouse = glm::vec4(input.x, input.y, input.click_x, click_frame ? input.click_y : -input.click_y);
+            }
         }
         if (!input.left) mouse = glm::vec4(mouse.x, mouse.y, -std::fabs(mouse.z), -std::fabs(mouse.w));
         if (!(*overlay)->wants_keyboard()) {
@@ -259,6 +280,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
             nlohmann::ordered_json files = nlohmann::ordered_json::array();
             for (const auto& f : changed) files.push_back(fs::proximate(f).string());
             log.write("reload-started", {{"files", files}});
+            reimport_changed(changed);
             if (reload.busy()) reload.again = true;  // edited while compiling: compile once more after
             else reload.start(toml, bo, log.now_ms());
         }
@@ -277,7 +299,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
                 if (next_ex)
                     if (auto a = (*next_ex)->adopt_contents(*current); !a) next_ex = a.error();
                 if (!next_ex) {
-                    const Error& e = next_ex.error();
+                    const Error e = map_scratch_error(next_ex.error());  // an import's tab, not its scratch copy
                     std::fputs(e.format().c_str(), stderr);
                     std::fprintf(stderr, "passlab: keeping the last good frame\n");
                     log.write("reload-failed", {{"file", e.loc.file}, {"line", e.loc.line}, {"col", e.loc.col}, {"pass", e.pass}, {"message", e.message}});
@@ -292,7 +314,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
                     current->set_timeout(frame_timeout);
                     base_params = current->params();
                     reapply_touched(st, *current);
-                    watcher.watch(current->graph().dependencies);
+                    watch_all(current->graph().dependencies);
                     std::vector<std::string> all;
                     for (const auto& p : current->graph().passes) all.push_back(p.desc->name);
                     log.write("reload-ok", {{"passes", all},

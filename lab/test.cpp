@@ -3,6 +3,7 @@
 // fails or nothing was selected. Selection (--case, shards) is test_select.cpp, -j workers
 // test_workers.cpp, --json/--junit results.cpp.
 #include "verbs.hpp"
+#include "sources.hpp"
 
 #include "check/checks.hpp"
 #include "report.hpp"
@@ -34,7 +35,7 @@ void print_case(const ReportEntry& e, bool verbose) {
         return;
     }
     std::printf("%s %s: %s (%.0f ms)\n", r.passed ? "PASS" : "FAIL", e.where.c_str(), r.name.c_str(), r.ms);
-    if (!r.error.empty()) std::printf("%s", r.error.c_str());
+    if (!r.error.empty()) std::printf("%s", map_scratch_text(r.error).c_str());
     for (const auto& ch : r.checks) {
         // A golden written or rewritten is always shown: it changed a committed file.
         bool wrote = ch.golden_write != check::CheckResult::GoldenWrite::none;

@@ -91,6 +91,13 @@ struct MutateOptions {
     std::string json;                  // --json FILE: every mutant and its outcome
 };
 
+struct ImportVerbOptions {
+    std::string source;     // Shadertoy JSON / mainImage file / folder, or ISF .fs
+    std::string dest;       // -o: the new preset folder (must not exist)
+    std::string kind;       // --kind shadertoy|isf
+    bool golden = true;     // --no-golden: no [[test]] golden case (corpora that bring their own)
+};
+
 struct GradeOptions {
     std::string preset;
     std::string out_dir = "grade-out";  // actual/expected/diff images of failed cases
@@ -98,6 +105,7 @@ struct GradeOptions {
 
 int render(const RenderOptions& o, const CommonOptions& c);
 int grade(const GradeOptions& o, const CommonOptions& c);
+int import_source(const ImportVerbOptions& o);
 int new_preset(const NewOptions& o, const CommonOptions& c);
 int bench(const BenchOptions& o, const CommonOptions& c);
 int run(const RunOptions& o, const CommonOptions& c);

@@ -150,6 +150,8 @@ Status bind_pass(const graph::GraphDesc& desc, CompiledPass& cp) {
         if (name.size() > 5 && name.ends_with("_prev")) {
             std::string base = name.substr(0, name.size() - 5);
             const graph::ImageDesc* hi = desc.find_image(base);
+            // An alias of a history image reads the previous frame through its own sampler.
+            if (hi && !hi->alias.empty()) hi = desc.find_image(hi->alias);
             const graph::BufferDesc* hb = desc.find_buffer(base);
             if ((hi && hi->history) || (hb && hb->history)) {
                 prev = true;
@@ -219,7 +221,7 @@ Status bind_pass(const graph::GraphDesc& desc, CompiledPass& cp) {
             }
         }
 
-        std::string res = prev ? br.resource + "_prev" : underlying(desc, br.resource);
+        std::string res = underlying(desc, br.resource) + (prev ? "_prev" : "");
         bool w = br.access == Access::storage_write || br.access == Access::storage_read_write;
         bool r = br.access != Access::storage_write;
         if (r) reads.push_back(res);

@@ -224,6 +224,17 @@ Result<GpuMesh> create_mesh(vk::Context& ctx, const CompiledGraph& g, const grap
 
 } // namespace
 
+namespace {
+// `flip_y`: row 0 of the upload becomes the picture's bottom row (per slice of a 3D image), as
+// OpenGL's UNPACK_FLIP_Y does for Shadertoy's vflip.
+void flip_rows(image::Image& img) {
+    const size_t row = static_cast<size_t>(img.width) * 4;
+    for (int z = 0; z < img.depth; ++z)
+        for (int y = 0; y < img.height / 2; ++y)
+            std::swap_ranges(img.at(0, y, z), img.at(0, y, z) + row, img.at(0, img.height - 1 - y, z));
+}
+} // namespace
+
 Result<GraphResources> create_resources(vk::Context& ctx, const CompiledGraph& g) {
     GraphResources R;
     graph::SizeEnv env = size_env(g.desc, g.view);
@@ -296,6 +307,7 @@ Result<GraphResources> create_resources(vk::Context& ctx, const CompiledGraph& g
                     pixels = std::move(img.value());
                 }
             }
+            if (pixels && d.flip_y) flip_rows(*pixels);
             uint32_t full = 1 + static_cast<uint32_t>(std::floor(std::log2(std::max({gi.extent.width, gi.extent.height, gi.extent.depth}))));
             gi.mips = d.mips == 0 ? full : std::min(static_cast<uint32_t>(d.mips), full);
             gi.layers = d.kind == graph::ImageKind::cube ? 6u

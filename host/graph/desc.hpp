@@ -83,6 +83,7 @@ struct ImageDesc {
     std::string alias;     // another image's name: same memory, own sampler
     std::string file;      // image file (relative to the preset), PNG/EXR/HDR/JPG
     bool srgb = false;     // file/generator colour is sRGB-encoded
+    bool flip_y = false;   // file/generator rows uploaded bottom first (OpenGL's UNPACK_FLIP_Y, Shadertoy's vflip)
     std::string generator;  // checker | uv-grid | value-noise | gradient-noise | constant
     std::map<std::string, std::vector<double>> generator_args;  // e.g. cells=[8], color_a=[...]
     // Cleared at the start of every frame. Doubles, so that integer formats clear exactly (a
@@ -340,6 +341,7 @@ struct PresetMeta {
     std::string level;                  // "core" or "extended" (the catalogue's; "" = not said)
     std::vector<std::string> sources;   // citations of the course documents ("000 L893-898")
     std::string invariant;              // what the tests check, in one sentence (docs/catalogue.md)
+    std::string author, license, source;  // provenance (imported presets: author, licence, source id)
 };
 
 // A generic value of a test case or check argument: number, string, bool or number list.
@@ -359,6 +361,7 @@ struct TestDesc {
     double time = 0.0;
     int frames = 1;
     double step = 1.0 / 60.0;
+    std::array<double, 4> mouse{};     // frame.mouse in every frame (the window's convention: pixels, top-left origin)
     std::map<std::string, Value> set;  // param overrides
     std::optional<OrbitCamera> camera; // overrides [view].camera.orbit
     std::map<std::string, CameraDesc> cameras;  // `cameras = { sun = { eye = ... } }`: replaced cameras

@@ -51,6 +51,9 @@ Status parse_preset(const toml::table& t, const std::string& file, GraphDesc& g)
         }
     }
     if (auto s = r.str("invariant", g.meta.invariant); !s) return s;
+    if (auto s = r.str("author", g.meta.author); !s) return s;
+    if (auto s = r.str("license", g.meta.license); !s) return s;
+    if (auto s = r.str("source", g.meta.source); !s) return s;
     return r.finish();
 }
 

@@ -152,6 +152,7 @@ Status parse_image(const toml::table& it, const std::string& file, ImageDesc& d)
     if (auto s = r.boolean("history", d.history); !s) return s;
     if (auto s = r.str("file", d.file); !s) return s;
     if (auto s = r.boolean("srgb", d.srgb); !s) return s;
+    if (auto s = r.boolean("flip_y", d.flip_y); !s) return s;
     if (auto s = r.choice("generator", d.generator, kImageGenerators); !s) return s;
     if (auto s = parse_generator_args(r, d.name, d); !s) return s;
     std::vector<double> clear;
@@ -169,6 +170,8 @@ Status parse_image(const toml::table& it, const std::string& file, ImageDesc& d)
     if (!d.generator_args.empty() && d.generator.empty()) return err("args are generator arguments; add generator = \"...\"", "args");
     if (d.srgb && d.file.empty() && d.generator.empty())
         return err("srgb applies to file and generator images; a rendered image uses format = \"rgba8_srgb\"", "srgb");
+    if (d.flip_y && d.file.empty() && d.generator.empty())
+        return err("flip_y applies to file and generator images (what is uploaded)", "flip_y");
     if (d.kind == ImageKind::tex3d && d.samples > 1) return err("a 3D image cannot be multisampled", "samples");
     if (d.samples > 1 && d.mips != 1) return err("a multisampled image has exactly one mip", "mips");
     return ok_status();

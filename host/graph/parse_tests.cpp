@@ -59,6 +59,9 @@ Status parse_test_body(const toml::table& t, const std::string& file, GraphDesc&
     if (auto s = r.integer("frames", d.frames, 1, 100000); !s) return s;
     if (auto s = r.number("step", d.step); !s) return s;
     if (!(d.step > 0)) return r.error(r.what() + ": step must be > 0 seconds", r.value_loc("step"));
+    std::vector<double> mouse;
+    if (auto s = r.numbers("mouse", mouse, 4, 4); !s) return s;
+    if (!mouse.empty()) d.mouse = {mouse[0], mouse[1], mouse[2], mouse[3]};
     auto set = r.table("set", "a table { param = value }");
     if (!set) return set.error();
     if (*set)

@@ -244,6 +244,10 @@ class Evaluator {
         ws();
         if (i_ >= s_.size() || s_[i_] != ')') return set(fail("expected ')' to close " + fn + "(", i_));
         ++i_;
+        if (fn == "vec2") {  // (a, b) from two scalars: a size whose sides follow different rules
+            if (a->size() != 1 || b->size() != 1) return set(fail("vec2(a, b) takes two scalars", at));
+            return Vec{(*a)[0], (*b)[0]};
+        }
         return apply(*a, *b, fn == "min" ? 'm' : fn == "max" ? 'M' : 'c', at, b_at);
     }
 
@@ -277,7 +281,7 @@ class Evaluator {
         if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
             std::string id;
             while (i_ < s_.size() && ident_char(s_[i_])) id += s_[i_++];
-            if (id == "min" || id == "max" || id == "ceil_div" || id == "log2") return call(id, at);
+            if (id == "min" || id == "max" || id == "ceil_div" || id == "log2" || id == "vec2") return call(id, at);
             if (auto l = env_.locals.find(id); l != env_.locals.end()) return Vec{T(l->second)};
             if constexpr (kFloat)
                 if (is_float_function(id)) return call1(id, at);
@@ -357,7 +361,7 @@ std::vector<std::string> size_names(const SizeEnv& env) {
     std::vector<std::string> names = {"view", "view.w", "view.h"};
     for (const auto& [k, v] : env.params) names.push_back("params." + k);
     for (const auto& [k, v] : env.locals) names.push_back(k);
-    names.insert(names.end(), {"min", "max", "ceil_div", "log2"});
+    names.insert(names.end(), {"min", "max", "ceil_div", "log2", "vec2"});
     return names;
 }
 

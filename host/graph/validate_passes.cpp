@@ -53,6 +53,14 @@ struct PassChecker {
     SourceLoc at(const std::string& key) const { return p.keys.at(key, p.loc); }
 
     const ImageDesc* base(const ImageDesc* d) const { return d && !d->alias.empty() ? g.find_image(d->alias) : d; }
+    // NAME_prev of a history image (or of an alias of one) or history buffer: last frame's contents.
+    bool is_previous_frame(const std::string& res) const {
+        if (res.size() <= 5 || !res.ends_with("_prev")) return false;
+        const std::string name = res.substr(0, res.size() - 5);
+        const ImageDesc* i = base(g.find_image(name));
+        const BufferDesc* b = g.find_buffer(name);
+        return (i && i->history) || (b && b->history);
+    }
     const vk::FormatInfo* format(const ImageDesc* d) const { return d ? vk::find_format(effective_format(g, *d)) : nullptr; }
 
     Status need_image(const std::string& n, const SourceLoc& l, const char* what = "image") const {
@@ -306,7 +314,7 @@ struct PassChecker {
         }
         if (!p.swap.empty() && p.repeat.empty()) return err("swap exchanges images between iterations; add repeat = N", p.swap_loc);
         for (const auto& [shader_name, res] : p.bind)
-            if (!g.find_image(res) && !g.find_buffer(res))
+            if (!g.find_image(res) && !g.find_buffer(res) && !is_previous_frame(res))
                 return ref_error("bind target", res, p.keys.at("bind." + shader_name, p.bind_loc), p.name, names.resources(), "images and buffers");
         for (const auto& [shader_name, v] : p.bind_views)
             if (auto s = need_image(v.image, p.keys.at("bind." + shader_name, p.bind_loc), "a view's image (mip/layer)"); !s) return s;

@@ -4,6 +4,7 @@
 // token; SPIR-V is reflected and guarded against absurd private memory.
 #include "shader/bindings.hpp"
 #include "shader/cache.hpp"
+#include "shader/entry.hpp"
 #include "shader/include.hpp"
 #include "shader/program.hpp"
 #include "util/scan.hpp"
@@ -226,6 +227,7 @@ Result<Program> compile_program(const std::vector<StageInput>& stages, const Com
             shown_to_disk[line_name(display_path(f))] = f;
             prog.dependencies.push_back(f);
         }
+        if (st.stage == Stage::fragment) ex->text += main_image_entry(ex->text);
         texts.push_back(std::move(ex->text));
         shown_names.push_back(line_name(shown));
     }
