@@ -24,6 +24,13 @@ layout(location = 1) in vec3 v_normal[];
 layout(location = 0) out vec3 g_normal;
 layout(location = 1) out vec2 g_bary;     // 2 of the 3 sub-triangle barycentrics (wireframe); 3 would exceed 1024
 layout(std430) buffer Sub { uint total; uint per_input[]; } sub;
+#ifdef SPHERE_RADIUS
+// Test instrument for the sphere (centre OFFSET, radius SPHERE_RADIUS): the largest distance
+// from the sphere of an emitted vertex on the PN patch and, for comparison, of the same vertex on
+// the flat triangle (what subdivision without a surface rule would produce). Non-negative floats
+// order like their bits, so atomicMax on the bits is a float max.
+layout(std430) buffer Radial { uint pn_max; uint linear_max; } radial;
+#endif
 
 vec3 b300, b030, b003, b210, b120, b021, b012, b201, b102, b111;
 
@@ -59,6 +66,13 @@ vec3 pn_point(vec3 b) {
 void emit(int r, int k, float n, int j) {
     vec3 b = vec3(1.0 - float(r) / n, float(k) / n, float(r - k) / n);
     vec3 p = pn_point(b);
+#ifdef SPHERE_RADIUS
+    if (params.verify) {   // test-only: two atomics per vertex
+        vec3 flat_p = b.x * b300 + b.y * b030 + b.z * b003;
+        atomicMax(radial.pn_max, floatBitsToUint(abs(length(p - OFFSET) - SPHERE_RADIUS)));
+        atomicMax(radial.linear_max, floatBitsToUint(abs(length(flat_p - OFFSET) - SPHERE_RADIUS)));
+    }
+#endif
     gl_Position = frame.view_proj * vec4(p, 1.0);
     g_normal = b.x * v_normal[0] + b.y * v_normal[1] + b.z * v_normal[2];
     // Strip vertex j is corner j mod 3 of every triangle it is in: the three differ in each
