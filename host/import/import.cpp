@@ -44,7 +44,10 @@ std::optional<SourceKind> detect_source(const fs::path& path, const std::string&
     if (ext == ".json") return SourceKind::shadertoy_json;
     if (forced == "shadertoy") return SourceKind::shadertoy_file;
     if (ext == ".fs" || ((ext == ".frag" || ext == ".glsl") && looks_isf(path))) return SourceKind::isf;
-    if (ext == ".frag" || ext == ".glsl") return SourceKind::shadertoy_file;
+    // A .frag/.glsl is a Shadertoy Image tab only if it defines mainImage: an ordinary shader
+    // given where a preset is expected gets the "a preset is a folder" message instead.
+    if ((ext == ".frag" || ext == ".glsl") && head_of(path, 1u << 20).find("mainImage") != std::string::npos)
+        return SourceKind::shadertoy_file;
     return std::nullopt;
 }
 
