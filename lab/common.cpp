@@ -142,9 +142,9 @@ std::vector<std::string> exercise_files(const std::filesystem::path& preset_toml
     std::error_code ec;
     // The preset's own exercise/ says which files a student rewrites.
     if (fs::is_directory(root / "exercise", ec)) {
-        for (auto it = fs::recursive_directory_iterator(root / "exercise", ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-            if (it->is_regular_file() && it->path().extension() != ".md" && it->path().extension() != ".txt")
-                out.push_back(it->path().lexically_relative(root / "exercise").string());
+        for (const auto& f : files_under(root / "exercise"))
+            if (f.extension() != ".md" && f.extension() != ".txt")
+                out.push_back(f.lexically_relative(root / "exercise").string());
     } else {
         // Otherwise any file of the preset's folder the build read, but the TOML itself.
         const fs::path canon_root = canonical_or_normal(root);

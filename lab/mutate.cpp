@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -73,7 +74,8 @@ Verdict classify(const ChildResult& r, const std::string& mutated_file) {
             cases.push_back(c);
             continue;
         }
-        if (line.rfind("stopping: ", 0) == 0) runaway = true;
+        // test.cpp's last line when a device hung (its cases after the runaway ran on a fresh one).
+        if (line.rfind("a runaway shader may still be running", 0) == 0) runaway = true;
         if (cases.empty()) continue;
         Case& c = cases.back();
         if (line.rfind("    FAIL golden", 0) == 0) c.golden = true;
@@ -124,6 +126,11 @@ struct Tally {
         }
     }
     int killed() const { return invariant + golden + runaway + other; }
+    Tally& operator+=(const Tally& t) {
+        total += t.total, stillborn += t.stillborn, invariant += t.invariant, golden += t.golden;
+        runaway += t.runaway, other += t.other, survived += t.survived;
+        return *this;
+    }
     void print(const char* label) const {
         std::printf("%s: %d mutants, %d stillborn; of %d that compile: killed %d (invariants %d, goldens only %d, "
                     "runaway %d, other %d), survived %d",
@@ -163,7 +170,14 @@ int mutate(const MutateOptions& o, const CommonOptions& c) {
         presets.insert(presets.end(), found->begin(), found->end());
     }
     std::error_code ec;
-    const fs::path scratch_root = fs::temp_directory_path(ec) / ("passlab-mutate-" + std::to_string(getpid()));
+    // A fresh private folder (mkdtemp), never a predictable name another process could own.
+    std::string tmpl = (fs::temp_directory_path(ec) / "passlab-mutate-XXXXXX").string();
+    if (!mkdtemp(tmpl.data())) {
+        Error e = make_error("passlab mutate: cannot create a scratch folder in " + fs::temp_directory_path(ec).string());
+        e.code = ExitCode::environment;
+        return report(e);
+    }
+    const fs::path scratch_root = tmpl;
     nlohmann::json log = nlohmann::json::array();
     Tally all;
     int baseline_failures = 0;
@@ -256,9 +270,7 @@ int mutate(const MutateOptions& o, const CommonOptions& c) {
                            {"after", mutate::mutated_line_of(src.text, cand.m)}, {"note", v.note}});
         }
         tally.print(("  " + where).c_str());
-        all.total += tally.total, all.stillborn += tally.stillborn, all.invariant += tally.invariant;
-        all.golden += tally.golden, all.runaway += tally.runaway, all.other += tally.other;
-        all.survived += tally.survived;
+        all += tally;
     }
     fs::remove_all(scratch_root, ec);
     if (presets.size() > 1) all.print("all");
