@@ -1,6 +1,7 @@
 #include "exec/build.hpp"
 
 #include "exec/bind.hpp"
+#include "exec/image_override.hpp"
 #include "exec/preamble.hpp"
 #include "exec/views.hpp"
 #include "graph/parse.hpp"
@@ -150,8 +151,13 @@ Result<CompiledGraph> build_graph(const fs::path& preset_toml, const BuildOption
     g.desc = std::move(parsed.value());
     g.dependencies.push_back(g.desc.file);
 
-    for (const auto& s : opt.set)
+    for (const auto& s : opt.set) {
+        if (auto img = apply_image_override(g.desc, s)) {
+            if (!*img) return img->error();
+            continue;
+        }
         if (auto st = apply_param_override(g.desc.params, s); !st) return st.error();
+    }
     for (const auto& [name, value] : opt.set_values)
         if (auto st = apply_param_value(g.desc.params, name, value, {}); !st) return st.error();
     for (auto& c : g.desc.cameras)

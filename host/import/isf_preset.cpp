@@ -139,7 +139,7 @@ Result<PresetFiles> import_isf(const fs::path& fs_file, const ImportOptions& o) 
         } else if (in.type == "image") {
             images += in.name + " = { generator = \"uv-grid\", size = [512, 512], flip_y = true, sampler = { address = \"clamp\" } }\n";
             samplers += "uniform sampler2D " + in.name + ";  // image input: a test image (edit preset.toml to use a file)\n";
-            out.warnings.push_back("input '" + in.name + "' (image): a procedural uv grid stands in; set file = \"...\" on image '" + in.name + "' in preset.toml for a picture");
+            out.warnings.push_back("input '" + in.name + "' (image): a procedural uv grid stands in; give a picture with --set " + in.name + "=FILE (or file = \"...\" on image '" + in.name + "' in preset.toml)");
         } else {  // audio, audioFFT
             images += in.name + " = { generator = \"constant\", size = [512, 2], args = { value = [0, 0, 0, 0] } }\n";
             samplers += "uniform sampler2D " + in.name + ";  // " + in.type + ": silence (not supported)\n";

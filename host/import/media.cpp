@@ -31,7 +31,7 @@ MediaImage media_image(const Channel& c, const std::string& name, const std::str
         // Noise textures are what most shaders sample: one random value per texel (a value
         // noise whose lattice is the texel grid), 256x256 like Shadertoy's "Gray Noise Medium".
         m.image = "{ generator = \"value-noise\", size = [256, 256], args = { frequency = 256 }" + upload + mips + sampler + " }";
-        warn("the texture", "a procedural stand-in (256x256 per-texel noise); point the channel at a file to use the real one");
+        warn("the texture", "a procedural stand-in (256x256 per-texel noise); give the real one with --set " + name + "=FILE");
         break;
     case ChannelKind::volume:
         m.image = "{ kind = \"3d\", generator = \"value-noise\", size = [32, 32, 32], args = { frequency = 32 }" + mips + sampler + " }";
