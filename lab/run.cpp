@@ -336,6 +336,8 @@ int run(const RunOptions& o, const CommonOptions& c) {
         in.delta = delta;
         in.camera = camera;
         in.mouse = mouse;
+        // The shader's keyboard; the panel's text fields keep theirs.
+        if (!(*overlay)->wants_keyboard()) in.keys = input.keys;
         if (auto s = current->render(in); !s) {
             int rc = report(s.error());
             if ((*ctx)->hung()) exit_after_hang(rc);

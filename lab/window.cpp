@@ -1,5 +1,7 @@
 #include "window.hpp"
 
+#include "key_codes.hpp"
+
 #include "image/image.hpp"
 #include "vk/barrier.hpp"
 #include "vk/check.hpp"
@@ -63,8 +65,9 @@ Result<std::unique_ptr<Window>> Window::create(vk::Context& ctx, int width, int 
         static_cast<Window*>(glfwGetWindowUserPointer(gw))->input().scroll += dy;
     });
     glfwSetKeyCallback(w->window_, [](GLFWwindow* gw, int key, int, int action, int) {
-        if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
         WindowInput& in = static_cast<Window*>(glfwGetWindowUserPointer(gw))->input();
+        key_event(in.keys, key, action);
+        if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
         if (key == GLFW_KEY_SPACE && action == GLFW_PRESS) in.pause_toggled = true;
         if (key == GLFW_KEY_RIGHT) in.step = true;
         if (key == GLFW_KEY_F12 && action == GLFW_PRESS) in.screenshot = true;
@@ -269,6 +272,7 @@ WindowInput Window::take_input() {
     WindowInput out = input_;
     input_.drag_dx = input_.drag_dy = input_.scroll = 0;
     input_.pause_toggled = input_.step = input_.screenshot = input_.toggle_ui = input_.toggle_help = false;
+    for (int k = 0; k < 256; ++k) input_.keys.set(exec::KeyboardState::pressed, k, false);  // one frame sees a press
     return out;
 }
 

@@ -2,6 +2,7 @@
 // creates one; headless verbs never initialise GLFW.
 #pragma once
 
+#include "exec/keyboard.hpp"
 #include "util/error.hpp"
 #include "vk/context.hpp"
 #include "vk/resources.hpp"
@@ -27,6 +28,7 @@ struct WindowInput {
     double drag_dx = 0, drag_dy = 0;    // cursor motion while held, since the last take()
     double scroll = 0;                  // wheel steps since the last take()
     bool pause_toggled = false, step = false, screenshot = false, toggle_ui = false, toggle_help = false;
+    exec::KeyboardState keys;          // frame.keys (Shadertoy's keyboard texture); `pressed` consumed by take()
 };
 
 class Window {

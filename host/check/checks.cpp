@@ -101,6 +101,7 @@ Result<Rendered> render_case(vk::Context& ctx, const fs::path& toml, const graph
         in.time = t.time - static_cast<double>(t.frames - 1 - f) * t.step;
         in.camera = t.camera;
         in.mouse = glm::vec4(float(t.mouse[0]), float(t.mouse[1]), float(t.mouse[2]), float(t.mouse[3]));
+        in.keys = exec::held_keys(t.held_keys, f);
         in.instance_order = v.order;
         if (auto s = out.ex->render(in); !s) return s.error();
     }

@@ -210,6 +210,7 @@ Status Executor::render(const FrameInput& in) {
     fb.camera_pos = glm::vec4(cam.position(), 1.0f);
     fb.resolution = {w, h, 1.0f / w, 1.0f / h};
     fb.mouse = in.mouse;
+    std::memcpy(fb.keys, in.keys.bits.data(), sizeof fb.keys);
     fb.jitter = {in.jitter.x, in.jitter.y, 0.0f, 0.0f};
     fb.time = static_cast<float>(in.time);
     fb.delta = static_cast<float>(in.delta);

@@ -6,6 +6,7 @@
 
 #include "exec/build.hpp"
 #include "exec/cameras.hpp"
+#include "exec/keyboard.hpp"
 #include "exec/pipelines.hpp"
 #include "exec/resources.hpp"
 #include "image/image.hpp"
@@ -29,6 +30,7 @@ struct FrameInput {
     double delta = 1.0 / 60.0;
     int index = 0;
     glm::vec4 mouse{0.0f};
+    KeyboardState keys;  // frame.keys
     std::optional<graph::OrbitCamera> camera;  // default: [view].camera
     glm::vec2 jitter{0.0f};                    // sub-pixel offset in pixels
     InstanceOrder instance_order = InstanceOrder::natural;

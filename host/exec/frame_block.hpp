@@ -31,6 +31,7 @@ struct FrameBlock {
     int32_t accum_frame;       // frames since the camera, view size or a param last changed (0 = changed)
     int32_t pad_[3];
     glm::vec4 target;          // w, h, 1/w, 1/h of the pass's render area (compute: the view)
+    glm::uvec4 keys[6];        // keyboard bits, exec/keyboard.hpp: row r key k = bit k%32 of word r*8 + k/32
 };
 
 static_assert(offsetof(FrameBlock, camera_pos) == 448);
@@ -41,7 +42,8 @@ static_assert(offsetof(FrameBlock, time) == 512);
 static_assert(offsetof(FrameBlock, index) == 520);
 static_assert(offsetof(FrameBlock, accum_frame) == 528);
 static_assert(offsetof(FrameBlock, target) == 544);
-static_assert(sizeof(FrameBlock) == 560);
+static_assert(offsetof(FrameBlock, keys) == 560);
+static_assert(sizeof(FrameBlock) == 656);
 
 // The blocks carry explicit bindings (frame 0, params 1 in set 0) only so that user resources
 // auto-mapped around them never collide; the host binds them by block name like everything else.
@@ -65,6 +67,7 @@ inline constexpr const char* kFrameBlockGlsl = R"(layout(set = 0, binding = 0, s
     float aspect;
     int accum_frame;
     vec4 target;
+    uvec4 keys[6];
 } frame;
 )";
 

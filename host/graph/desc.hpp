@@ -361,6 +361,7 @@ struct TestDesc {
     double time = 0.0;
     int frames = 1;
     double step = 1.0 / 60.0;
+    std::vector<int> held_keys;        // `keys`: JavaScript keyCodes held down from the first frame (frame.keys)
     std::array<double, 4> mouse{};     // frame.mouse in every frame (the window's convention: pixels, top-left origin)
     std::map<std::string, Value> set;  // param overrides
     std::optional<OrbitCamera> camera; // overrides [view].camera.orbit

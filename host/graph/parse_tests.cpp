@@ -2,6 +2,7 @@
 // check/ evaluates them.
 #include "graph/parse_parts.hpp"
 
+#include <cmath>
 #include <algorithm>
 
 namespace pl::graph {
@@ -62,6 +63,14 @@ Status parse_test_body(const toml::table& t, const std::string& file, GraphDesc&
     std::vector<double> mouse;
     if (auto s = r.numbers("mouse", mouse, 4, 4); !s) return s;
     if (!mouse.empty()) d.mouse = {mouse[0], mouse[1], mouse[2], mouse[3]};
+    std::vector<double> keys;
+    if (auto s = r.numbers("keys", keys, 1, 256); !s) return s;
+    for (double k : keys) {
+        if (k != std::floor(k) || k < 0 || k > 255)
+            return r.error(r.what() + ": keys are JavaScript keyCodes, integers 0..255 (65 = A, 32 = space, 37..40 = arrows)",
+                           r.value_loc("keys"));
+        d.held_keys.push_back(static_cast<int>(k));
+    }
     auto set = r.table("set", "a table { param = value }");
     if (!set) return set.error();
     if (*set)

@@ -42,11 +42,6 @@ MediaImage media_image(const Channel& c, const std::string& name, const std::str
         m.sky_pass = true;
         warn("the cube map", "a procedural sky (256x256 per face)");
         break;
-    case ChannelKind::keyboard:
-        // Shadertoy's keyboard texture: 256 keys x 3 rows (down, pressed this frame, toggled).
-        m.image = "{ generator = \"constant\", size = [256, 3], args = { value = [0, 0, 0, 0] }, sampler = { filter = \"nearest\", address = \"clamp\" } }";
-        m.warning = where + ": the keyboard is replaced by all keys up (live keyboard input is not supported yet)";
-        break;
     case ChannelKind::video:
     case ChannelKind::webcam:
         m.image = "{ generator = \"uv-grid\", size = [512, 512]" + upload + mips + sampler + " }";

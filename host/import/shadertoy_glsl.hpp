@@ -25,5 +25,8 @@ std::string pass_wrapper(const Tab& tab, const std::array<ChannelDecl, 4>& chann
 
 // The sky a cube-map stand-in shows (a baked pass rendering the six faces).
 std::string sky_cube_shader();
+// The pass that draws frame.keys (the window's keyboard, exec/keyboard.hpp) into Shadertoy's
+// 256x3 keyboard texture: row 0 held down, row 1 pressed this frame, row 2 toggled.
+std::string keyboard_shader();
 
 } // namespace pl::import

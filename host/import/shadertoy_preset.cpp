@@ -33,12 +33,17 @@ struct Builder {
     std::map<std::string, ChannelSampler> base_sampler;         // image -> its own sampler
     std::set<std::string> aliases;
     std::vector<std::string> sky_passes;
+    bool keyboard = false;  // some channel reads the keyboard: a pass draws it first each frame
 
     // The graph name a channel binds, creating the alias or media image it needs.
     std::string channel_resource(const Tab& t, size_t ch) {
         const Channel& c = t.channels[ch];
         const std::string where = t.label + " iChannel" + std::to_string(ch);
         if (c.kind == ChannelKind::none) return "pl_black";
+        if (c.kind == ChannelKind::keyboard) {
+            keyboard = true;  // one image for every channel that reads it
+            return "pl_keyboard";
+        }
         if (c.kind == ChannelKind::buffer || c.kind == ChannelKind::cube_buffer) {
             const std::string img = image_of(c);
             const int src_order = c.kind == ChannelKind::buffer ? c.buffer : 4;
@@ -136,6 +141,10 @@ struct Builder {
                         (mipmapped.count(name) ? ", mips = \"full\"" : "") + ", sampler = " + sampler_toml(s) + " }\n";
         }
         img_text += "pl_black = { generator = \"constant\", size = [1, 1], args = { value = [0, 0, 0, 0] } }\n";
+        if (keyboard) {
+            img_text += "pl_keyboard = { format = \"r8\", size = [256, 3], sampler = { filter = \"nearest\", address = \"clamp\" } }\n";
+            out.files["pl_keyboard.frag"] = keyboard_shader();
+        }
         std::string sky_text;
         if (!sky_passes.empty()) out.files["pl_sky_cube.frag"] = sky_cube_shader();
         for (const auto& s : sky_passes)
@@ -158,6 +167,8 @@ struct Builder {
         t += "\n[view]\nsize = [640, 360]\n";
         t += "\n[params]\ndate = { value = [2026.0, 0.0, 1.0, 43200.0], doc = \"iDate: year, month (0-11), day, seconds (iTime is added)\" }\n";
         t += "\n[images]\n" + img_text + images;
+        if (keyboard)
+            sky_text += "\n[[pass]]\nname     = \"pl_keyboard\"\nfragment = \"pl_keyboard.frag\"\ntargets  = [\"pl_keyboard\"]\n";
         t += sky_text + pass_text;
         t += "\n[output]\nimage = \"image\"\n";
         if (opt.golden)
@@ -176,7 +187,7 @@ struct Builder {
 } // namespace
 
 Result<PresetFiles> shadertoy_preset(const Toy& toy, const ImportOptions& o) {
-    Builder b{toy, o, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+    Builder b{toy, o, {}, {}, {}, {}, {}, {}, {}, {}, {}, false};
     return b.build();
 }
 
