@@ -15,6 +15,7 @@
 #include "panel.hpp"
 #include "reload/watcher.hpp"
 #include "exec/param_sidecar.hpp"
+#include "wall_clock.hpp"
 #include "window.hpp"
 
 #include <GLFW/glfw3.h>
@@ -203,6 +204,9 @@ int run(const RunOptions& o, const CommonOptions& c) {
     // lab ends with the message rather than render on a hung queue.
     const auto frame_timeout = timeout(c);
     current->set_timeout(frame_timeout);
+    // Shadertoy's iDate and ISF's DATE show the wall clock live (pinned in renders and tests).
+    const std::time_t started = std::time(nullptr);
+    apply_wall_clock(current->params(), o.set, started);
     std::vector<graph::ParamDesc> base_params = current->params();  // preset.toml + --set: "Reset" returns here
 
     LabState st;
@@ -312,6 +316,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
                     (*ctx)->retire(std::move(current));
                     current = std::move(next_ex.value());
                     current->set_timeout(frame_timeout);
+                    apply_wall_clock(current->params(), o.set, started);
                     base_params = current->params();
                     reapply_touched(st, *current);
                     watch_all(current->graph().dependencies);

@@ -155,6 +155,10 @@ struct ParamDesc {
     bool log = false;  // UI slider in log scale
     std::vector<std::string> options;  // enum values; shader sees NAME_OPTION defines
     std::string doc;
+    // `clock`: in `run` the value is the local date when the lab started (year, month, day,
+    // seconds since midnight; "date": month 0-11 as JavaScript and Shadertoy's iDate count,
+    // "date-month1": 1-12 as ISF's DATE); renders and tests keep `value`, so they repeat.
+    std::string clock;
     KeyLocs keys;  // "value", "min", "max", ...
     int components() const;  // 1..4
 };

@@ -156,6 +156,8 @@ Status parse_param(const toml::node& v, const TableReader& sec, const std::strin
     if (auto s = r.strings("options", p.options); !s) return s;
     if (auto s = r.str("doc", p.doc); !s) return s;
     if (auto s = r.choice("type", type, kTypeNames); !s) return s;
+    static const std::vector<std::string> kClocks = {"date", "date-month1"};
+    if (auto s = r.choice("clock", p.clock, kClocks); !s) return s;
     if (auto s = r.finish(); !s) return s;
     std::set<std::string> seen, seen_upper;
     for (const auto& o : p.options) {
@@ -170,6 +172,8 @@ Status parse_param(const toml::node& v, const TableReader& sec, const std::strin
             return pr.err("options \"" + o + "\" and another differ only in case; both would be #define " + upper, r.value_loc("options"));
     }
     if (auto s = pr.value(*value, type, color); !s) return s;
+    if (!p.clock.empty() && p.type != ParamType::vec4)
+        return pr.err("clock = \"" + p.clock + "\" fills year, month, day and seconds: the param must be a vec4", r.value_loc("clock"));
     if (p.log && p.type != ParamType::f32 && p.type != ParamType::i32)
         return pr.err("log = true applies to a float or int slider", r.value_loc("log"));
     return pr.range(&r);

@@ -79,7 +79,7 @@ Result<PresetFiles> import_isf(const fs::path& fs_file, const ImportOptions& o) 
         out.inputs.push_back(fs::absolute(vs_file));
     }
 
-    std::string params = "date = { value = [2026.0, 1.0, 1.0, 43200.0], doc = \"DATE: year, month (1-12 in ISF), day, seconds (TIME is added)\" }\n";
+    std::string params = "date = { value = [2026.0, 1.0, 1.0, 43200.0], clock = \"date-month1\", doc = \"DATE: year, month (1-12 in ISF), day, seconds (TIME is added); run: the wall clock\" }\n";
     std::string images, header, samplers, events_glsl;
     std::vector<std::string> events;
     std::map<std::string, std::string> size_terms;  // long inputs: index -> VALUE in size expressions

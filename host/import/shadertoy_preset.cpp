@@ -165,7 +165,7 @@ struct Builder {
         if (!toy.license.empty()) t += "license = " + toml_quote(toy.license) + "\n";
         t += "source  = " + toml_quote(toy.source) + "\n";
         t += "\n[view]\nsize = [640, 360]\n";
-        t += "\n[params]\ndate = { value = [2026.0, 0.0, 1.0, 43200.0], doc = \"iDate: year, month (0-11), day, seconds (iTime is added)\" }\n";
+        t += "\n[params]\ndate = { value = [2026.0, 0.0, 1.0, 43200.0], clock = \"date\", doc = \"iDate: year, month (0-11), day, seconds (iTime is added); run: the wall clock\" }\n";
         t += "\n[images]\n" + img_text + images;
         if (keyboard)
             sky_text += "\n[[pass]]\nname     = \"pl_keyboard\"\nfragment = \"pl_keyboard.frag\"\ntargets  = [\"pl_keyboard\"]\n";
