@@ -12,7 +12,7 @@ const uint MESH_TEAPOT = 0u, MESH_FLOOR = 1u;  // order of the buffer's `meshes`
 // The teapot generator centres its bounding box: its base is 0.4828 below its origin
 // (tests/graphs/bvh/scene.glsl).
 const vec3 kTeapotOffset = vec3(0.0, 0.4828, 0.0);
-const vec3 kLightCentre = vec3(1.6, 3.0, 1.2);
+const vec3 kLightCentre = vec3(-2.2, 2.4, 1.4);
 const float kLightRadius = 0.6;
 const vec3 kSky = vec3(0.42, 0.48, 0.58), kLight = vec3(1.0, 0.92, 0.8) * 0.8;
 const float kAoDistance = 4.0;  // beyond this a ray reaches the sky
