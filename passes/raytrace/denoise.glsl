@@ -10,11 +10,13 @@
 #define PASSLAB_RAYTRACE_DENOISE_GLSL
 
 // Weight of a neighbour (point q, normal nq) for the centre (point p, normal n): 1 on the same
-// plane, falling with the angle between the normals (cos^sharpness) and to 0 once q is more than
-// plane_tol off the centre's tangent plane.
-float denoise_geometry_weight(vec3 p, vec3 n, vec3 q, vec3 nq, float plane_tol, float sharpness) {
+// plane, falling with the angle between the normals (cos^8: 0.5 at 24 degrees) and to 0 once q
+// is more than plane_tol off the centre's tangent plane. (cos^8 by three squarings: pow() is an
+// exp and a log per tap, in a 25-tap loop.)
+float denoise_geometry_weight(vec3 p, vec3 n, vec3 q, vec3 nq, float plane_tol) {
     float plane = max(0.0, 1.0 - abs(dot(q - p, n)) / plane_tol);
-    return plane * pow(max(dot(n, nq), 0.0), sharpness);
+    float c = max(dot(n, nq), 0.0), c2 = c * c, c4 = c2 * c2;
+    return plane * c4 * c4;
 }
 
 // Where this pixel's centre was last frame, in uv: the pixel's uv plus the motion of the point it

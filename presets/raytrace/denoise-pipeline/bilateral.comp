@@ -29,7 +29,7 @@ void main() {
             vec3 c = texelFetch(temporal, q, 0).rgb, d = c - c0;
             vec4 qp = texelFetch(g_position, q, 0);
             float w = exp(-float(x * x + y * y) / 4.5) * exp(-dot(d, d) / (2.0 * s * s)) * qp.w *
-                      denoise_geometry_weight(pos.xyz, n, qp.xyz, texelFetch(g_normal, q, 0).xyz, 0.05, 8.0);
+                      denoise_geometry_weight(pos.xyz, n, qp.xyz, texelFetch(g_normal, q, 0).xyz, 0.05);
             sum += w * c, wsum += w;
         }
     imageStore(bilateral, p, vec4(sum / wsum, 1.0));  // the centre has w = 1: wsum >= 1

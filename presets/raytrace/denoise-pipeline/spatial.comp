@@ -31,7 +31,7 @@ void main() {
             if (s.a == 0.0) continue;  // a hole
             float g = exp(-float(x * x + y * y) / sigma2);
             vec4 qp = texelFetch(g_position, q, 0);
-            float w = g * qp.w * denoise_geometry_weight(pos.xyz, n, qp.xyz, texelFetch(g_normal, q, 0).xyz, 0.05, 8.0);
+            float w = g * qp.w * denoise_geometry_weight(pos.xyz, n, qp.xyz, texelFetch(g_normal, q, 0).xyz, 0.05);
             sum += w * s.rgb, wsum += w;
             any_sum += g * s.rgb, any_w += g;
         }
