@@ -10,14 +10,7 @@ layout(location = 0) out vec4 hdr;
 uniform sampler2D g_position;
 uniform sampler2D g_normal;
 uniform sampler2D ao;
-
-vec3 albedo_of(int id) {  // precomputed-ao's colours per patch
-    if (id == 0) return vec3(0.75, 0.73, 0.7);
-    if (id == 1) return vec3(0.85, 0.35, 0.25);
-    if (id == 2) return vec3(0.3, 0.55, 0.85);
-    if (id <= 8) return vec3(0.8, 0.75, 0.45);
-    return vec3(0.6, 0.8, 0.6);
-}
+#include "lighting.glsl"
 
 float upsampled_visibility(ivec2 px, vec3 p, vec3 n) {
     vec2 f = (vec2(px) + 0.5) / 2.0 - 0.5;  // AO texel q sits at pixel 2q + 0.5: f in AO texels
@@ -49,10 +42,6 @@ void main() {
     vec4 gn = texelFetch(g_normal, px, 0);
     vec3 n = normalize(gn.xyz);
     float v = upsampled_visibility(px, pos.xyz, n);
-    vec3 l = normalize(vec3(cos(radians(params.light_elevation)) * cos(radians(params.light_azimuth)),
-                            sin(radians(params.light_elevation)),
-                            cos(radians(params.light_elevation)) * sin(radians(params.light_azimuth))));
-    vec3 kd = albedo_of(int(gn.w + 0.5));
-    vec3 c = v * (params.ambient * kd + params.direct * kd * max(dot(n, l), 0.0));
+    vec3 c = rtao_shade(v, n, int(gn.w + 0.5));
     hdr = vec4(params.show == SHOW_AO ? vec3(v) : c, 1.0);
 }
