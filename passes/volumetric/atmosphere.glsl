@@ -50,6 +50,10 @@ float atmo_phase_mie(float mu, float g) {
            ((2.0 + g2) * pow(1.0 + g2 - 2.0 * g * mu, 1.5));
 }
 
+#ifdef ATMO_CLOUDS
+float atmo_cloud_density(vec3 p, float h);   // defined by the includer (after this file is fine)
+#endif
+
 // ---- Densities (L2283-2293, L2395-2403) -----------------------------------------------------
 // density(h) = density(0) exp(-h / H), per species; returned relative to sea level (the
 // coefficients above carry the sea-level value). p is relative to the planet's centre.

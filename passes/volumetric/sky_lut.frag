@@ -4,13 +4,4 @@
 // live view pays one fetch per pixel (sky.frag without SKY_DIRECT).
 #include "volumetric/atmosphere.glsl"
 #include "volumetric/sky_view.glsl"
-#ifndef SKY_ORIGIN
-#define SKY_ORIGIN frame.camera_pos.xyz
-#endif
-layout(location = 0) in vec2 uv;
-layout(location = 0) out vec4 color;
-void main() {
-    vec3 sun = atmo_sun_direction(params.sun_elevation, params.sun_azimuth);
-    AtmoResult a = atmo_scatter(SKY_ORIGIN, sky_lut_direction(uv), sun, 1e30, 0.0, params.steps, params.sub_steps);
-    color = vec4(a.radiance, 1.0);
-}
+#include "volumetric/sky_lut_pass.glsl"
