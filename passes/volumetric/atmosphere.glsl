@@ -135,6 +135,7 @@ vec3 atmo_transmittance(vec2 tau) {
 // ---- Single scattering along a view ray (L2418-2459) ----------------------------------------
 // The march of the seed's scatter(): `steps` samples along the view ray, each with its own
 // march to the sun (`sub_steps` samples), A = exp(-(b_R (tau_Rs + tau_R) + b_M (tau_Ms + tau_M))),
+// tau_R, tau_M the view ray's optical depth from the eye to the sample,
 // sR += A dR, sM += A dM, and the phase functions applied once at the end:
 //     L = I_s (sR b_R P_R(mu) + sM b_M P_M(mu)),   mu = dot(d, sun).
 // origin: world position (m); d: unit view direction; max_len: the ray stops there too (the
@@ -142,7 +143,9 @@ vec3 atmo_transmittance(vec2 tau) {
 // sample lies (0 = the seed's left sums; the Bayer offsets of interleaved sampling, L2333-2336).
 // transmittance (out): exp of the view ray's whole optical depth (to attenuate a surface).
 struct AtmoResult {
-    vec3 radiance;
+    vec3 radiance;         // I_s (sR b_R P_R(mu) + sM b_M P_M(mu))
+    vec3 rayleigh;         // I_s sR b_R and I_s sM b_M: the in-scatter before its phase function
+    vec3 mie;              // (interleaved sampling blurs these and applies the phases after)
     vec3 transmittance;
     float marched;         // the marched length, m
 };
@@ -162,9 +165,15 @@ AtmoResult atmo_scatter(vec3 origin, vec3 d, vec3 sun, float max_len, float offs
         atmo_densities(p, dR, dM);
         dR *= dL;
         dM *= dL;
+        // Optical depth from the eye to the sample: the steps before plus `offset` of this one.
+        // The seed adds the whole step first (L2433-2434 before L2444), attenuating the sample by
+        // the part of its step it has not crossed yet: a bias of one step's optical depth, small
+        // at 64 steps, 0.8 in blue for an 8-step horizontal ray; it would also make the sample
+        // offset of interleaved sampling move the density but not the attenuation.
+        vec2 depth_here = depth + offset * vec2(dR, dM);
         depth += vec2(dR, dM);
         vec2 depth_s = atmo_sun_depth_at(p, sun, sub_steps);
-        vec3 A = atmo_transmittance(depth_s + depth);
+        vec3 A = atmo_transmittance(depth_s + depth_here);
 #ifdef ATMO_SUN_VISIBILITY
         A *= ATMO_SUN_VISIBILITY(p - vec3(0.0, ATMO_RE, 0.0));
 #endif
@@ -174,6 +183,8 @@ AtmoResult atmo_scatter(vec3 origin, vec3 d, vec3 sun, float max_len, float offs
     float mu = dot(d, sun);
     AtmoResult res;
     res.radiance = ATMO_IS * (sR * ATMO_BR * atmo_phase_rayleigh(mu) + sM * ATMO_BM * atmo_phase_mie(mu, ATMO_G));
+    res.rayleigh = ATMO_IS * (sR * ATMO_BR);
+    res.mie = ATMO_IS * (sM * ATMO_BM);
     res.transmittance = atmo_transmittance(depth);
     res.marched = L;
     return res;
