@@ -9,14 +9,12 @@
 // The 4 x 4 Bayer (ordered-dither) matrix, values 0..15: each value once per tile, and any two
 // consecutive values far apart in the tile.
 float bayer4(ivec2 p) {
-    // TODO(interleaved-sampling 1) begin
     const float m[16] = float[](0.0, 8.0, 2.0, 10.0,
                                 12.0, 4.0, 14.0, 6.0,
                                 3.0, 11.0, 1.0, 9.0,
                                 15.0, 7.0, 13.0, 5.0);
     ivec2 q = p & 3;
     return m[q.y * 4 + q.x];
-    // TODO(interleaved-sampling 1) end
 }
 
 // The ray offset of pixel p, in steps: one of {0..15}/16, plus 1/32 so the 16 offsets sit at the

@@ -25,11 +25,9 @@ uniform sampler2D depth;
 // Sun visibility of a world point: 1 lit, 0 behind a monolith (as seen from the sun). A point
 // outside the map is lit (shadow_map.glsl's convention): the sky's march mostly runs there.
 float shafts_sun_visibility(vec3 p) {
-    // TODO(light-shafts 2) begin
     vec3 coord = shadow_project(cameras.sun.view_proj, p);
     coord.z -= 2e-4;                       // 8 m of the sun camera's 40 km depth range: no self-shadowing of the ground
     return shadow_nearest(shadow, coord);
-    // TODO(light-shafts 2) end
 }
 #define ATMO_SUN_VISIBILITY(p) shafts_sun_visibility(p)
 #include "volumetric/atmosphere.glsl"
@@ -44,13 +42,11 @@ layout(location = 2) out vec4 inscatter_mie;   // SHAFTS_SPLIT: location 0 holds
 // The ray's length from the depth buffer: the distance from the eye to the surface the pixel
 // sees, or "no limit" (1e30) where the depth is the far plane's (the sky).
 float shafts_ray_limit(vec3 eye) {
-    // TODO(light-shafts 1) begin
     ivec2 size = textureSize(depth, 0);
     float z = texelFetch(depth, min(ivec2(uv * vec2(size)), size - 1), 0).r;
     if (z >= 1.0) return 1e30;
     vec4 w = frame.inv_view_proj * vec4(uv * 2.0 - 1.0, z, 1.0);
     return length(w.xyz / w.w - eye);
-    // TODO(light-shafts 1) end
 }
 
 #ifndef SHAFTS_OFFSET

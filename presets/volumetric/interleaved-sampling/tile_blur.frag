@@ -25,7 +25,6 @@ void main() {
     ivec2 c = ivec2(gl_FragCoord.xy), size = textureSize(src, 0);
     float lc = log_distance(c);
     const float tent[5] = float[](0.5, 1.0, 1.0, 1.0, 0.5);
-    // TODO(interleaved-sampling 2) begin
     vec3 sum = vec3(0.0), sum_mie = vec3(0.0);
     float wsum = 0.0;
     for (int dy = -2; dy <= 2; dy++) {
@@ -40,5 +39,4 @@ void main() {
     }
     color = vec4(sum / wsum, 1.0);
     color_mie = vec4(sum_mie / wsum, 1.0);
-    // TODO(interleaved-sampling 2) end
 }

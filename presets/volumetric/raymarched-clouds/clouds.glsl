@@ -37,17 +37,13 @@ float cloud_fbm(vec3 p) {
 }
 
 float cloud_map(vec3 p) {
-    // TODO(raymarched-clouds 1) begin
     return pow(max(0.0, smoothstep(0.4 + 0.04, 0.6 + 0.04, cloud_fbm(p * 2e-4))), 2.0) * params.cloud_factor;
-    // TODO(raymarched-clouds 1) end
 }
 
 // p: relative to the planet's centre; h: height above the ground (the library passes both).
 float atmo_cloud_density(vec3 p, float h) {
-    // TODO(raymarched-clouds 2) begin
     float bottom = params.cloud_bottom, top = params.cloud_top;
     if (!(bottom < h && h < top)) return 0.0;
     return cloud_map(p + vec3(23175.7, 0.0, -(params.cloud_time * 3e3))) * sin((3.1415 * (h - bottom)) / (top - bottom));
-    // TODO(raymarched-clouds 2) end
 }
 #endif
