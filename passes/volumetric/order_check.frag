@@ -3,9 +3,11 @@
 // one texel of differences that must all be > 0:
 //   x = B - G, y = G - R at the zenith (the image centre): Rayleigh's lambda^-4 makes the
 //       zenith blue (002 L2199-2203); with the sun at 45 degrees, zenith B > G > R
-//   z = luminance 45 degrees above the horizon towards the sun minus the same opposite it:
-//       Rayleigh's phase is symmetric in mu, so only a Mie phase that peaks towards the sun
-//       (the code's -2 g mu, L2456) makes this positive
+//   z = luminance 45 degrees above the horizon towards the sun's azimuth minus the same opposite
+//       it. With the sun near the horizon the two directions have mu = +-cos 45 (nearly) and the
+//       same path through the air, so Rayleigh (symmetric in mu) nearly cancels and only a Mie
+//       phase peaking towards the sun (the code's -2 g mu, L2456) makes z clearly positive.
+//       Meaningful with a low sun only: at 45 degrees the "opposite" point is 90 degrees from it.
 // The sun must be at azimuth 0 (up on the fisheye).
 layout(location = 0) out vec4 color;
 uniform sampler2D src;

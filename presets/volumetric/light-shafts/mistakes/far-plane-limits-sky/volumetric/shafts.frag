@@ -22,12 +22,15 @@
 uniform sampler2D shadow;
 uniform sampler2D depth;
 
+// How much the shadow map blocks the sun (params.shadowing; the excess pass also marches with 0).
+float shafts_shadowing = 1.0;
+
 // Sun visibility of a world point: 1 lit, 0 behind a monolith (as seen from the sun). A point
 // outside the map is lit (shadow_map.glsl's convention): the sky's march mostly runs there.
 float shafts_sun_visibility(vec3 p) {
     vec3 coord = shadow_project(cameras.sun.view_proj, p);
     coord.z -= 2e-4;                       // 8 m of the sun camera's 40 km depth range: no self-shadowing of the ground
-    return shadow_nearest(shadow, coord);
+    return mix(1.0, shadow_nearest(shadow, coord), shafts_shadowing);
 }
 #define ATMO_SUN_VISIBILITY(p) shafts_sun_visibility(p)
 #include "volumetric/atmosphere.glsl"
@@ -56,6 +59,7 @@ float shafts_ray_limit(vec3 eye) {
 #endif
 
 void main() {
+    shafts_shadowing = params.shadowing;
     vec3 eye = frame.camera_pos.xyz;
     vec3 d = sky_camera_direction(uv);
     vec3 sun = atmo_sun_direction(params.sun_elevation, params.sun_azimuth);
@@ -67,7 +71,8 @@ void main() {
     // away, where the flat ground and the planet's sphere end the rays almost together) both
     // marches cover nearly the same path on slightly different grids, and the left sums'
     // discretisation error (~1/steps of L_in) is larger than the tail being compared.
-    float meaningful = (a.marched < 0.5 * u.marched || a.marched == u.marched) ? 1.0 : 0.0;
+    // A limited ray longer than the unlimited one is always counted: that is the bug to catch.
+    float meaningful = (a.marched < 0.5 * u.marched || a.marched >= u.marched) ? 1.0 : 0.0;
     inscatter = vec4(a.radiance - u.radiance, meaningful);
 #elif defined(SHAFTS_SPLIT)
     inscatter = vec4(a.rayleigh, 1.0);
@@ -77,5 +82,15 @@ void main() {
 #endif
     // alpha: ln of the length marched (>= 1 m), the edge-stopping "depth" of interleaved
     // sampling's cross-bilateral blur (tile_blur.frag)
+#ifdef SHAFTS_EXCESS
+    // .x: what the shadows remove from this ray's in-scatter (the same march without them minus
+    // with them, >= 0 by construction; its mean over the image must be clearly > 0: shafts exist)
+    shafts_shadowing = 0.0;
+    AtmoResult unshadowed = atmo_scatter(eye, d, sun, shafts_ray_limit(eye), SHAFTS_OFFSET, SHAFTS_STEPS, params.sub_steps);
+    transmit = vec4(dot(unshadowed.radiance - a.radiance, vec3(1.0 / 3.0)), 0.0, 0.0, 1.0);
+#else
+    // alpha: ln of the length marched (>= 1 m), the edge-stopping "depth" of interleaved
+    // sampling's cross-bilateral blur (tile_blur.frag)
     transmit = vec4(a.transmittance, log(max(a.marched, 1.0)));
+#endif
 }
