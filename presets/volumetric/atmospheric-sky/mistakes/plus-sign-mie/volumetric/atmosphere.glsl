@@ -152,6 +152,22 @@ struct AtmoResult {
 
 AtmoResult atmo_scatter(vec3 origin, vec3 d, vec3 sun, float max_len, float offset, int steps, int sub_steps) {
     vec3 o = origin + vec3(0.0, ATMO_RE, 0.0);
+    AtmoResult res;
+    // An eye above the atmosphere (sky-from-space, L2467-2497): start the march where the ray
+    // enters it, so all `steps` samples fall inside; a ray that misses it sees black space.
+    // (The seed moves the origin by the height above the top, `o += d * r`, L2487: the entry
+    // point only for a ray straight down.)
+    if (dot(o, o) > ATMO_RA * ATMO_RA) {
+        float enter = atmo_ray_enter(o, d, ATMO_RA);
+        if (enter < 0.0) {
+            res.radiance = res.rayleigh = res.mie = vec3(0.0);
+            res.transmittance = vec3(1.0);
+            res.marched = 0.0;
+            return res;
+        }
+        o += d * enter;
+        max_len -= enter;
+    }
     float L = atmo_ray_length(o, d, ATMO_RA);
     float ground = atmo_ray_enter(o, d, ATMO_RE);
     if (ground > 0.0) L = min(L, ground);
@@ -181,7 +197,6 @@ AtmoResult atmo_scatter(vec3 origin, vec3 d, vec3 sun, float max_len, float offs
         sM += A * dM;
     }
     float mu = dot(d, sun);
-    AtmoResult res;
     res.radiance = ATMO_IS * (sR * ATMO_BR * atmo_phase_rayleigh(mu) + sM * ATMO_BM * atmo_phase_mie(mu, ATMO_G));
     res.rayleigh = ATMO_IS * (sR * ATMO_BR);
     res.mie = ATMO_IS * (sM * ATMO_BM);
