@@ -10,18 +10,22 @@
 // from mixing across elevations (the "cross" in cross-bilateral: the weights come
 // from another image than the one filtered). Normalised by the weights' sum, so a constant field
 // stays constant. Two images are blurred with the same weights: the Rayleigh and the Mie
-// in-scatter before their phase functions, which phase_composite.frag applies per pixel after
-// the blur (the seed's order, L2331: so the sharp Mie peak around the sun is never blurred).
+// in-scatter before their phase functions, which are applied per texel after
+// the blur (the seed's order, L2331: so the sharp Mie peak around the sun is never blurred); the
+// third target is that radiance, at the blur's resolution (the composite upsamples it).
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 color;
 layout(location = 1) out vec4 color_mie;
+layout(location = 2) out vec4 radiance;    // R P_R(mu) + M P_M(mu): the phases applied after the blur
+#include "volumetric/atmosphere.glsl"
+#include "volumetric/sky_view.glsl"
 uniform sampler2D src;
 uniform sampler2D src_mie;
 uniform sampler2D transmit;   // .a = ln(length marched), written by the march (shafts.frag)
 
 float log_distance(ivec2 p) { return texelFetch(transmit, p, 0).a; }
 
-void main() {
+void blur() {
     ivec2 c = ivec2(gl_FragCoord.xy), size = textureSize(src, 0);
     float lc = log_distance(c);
     const float tent[5] = float[](0.5, 1.0, 1.0, 1.0, 0.5);
@@ -31,4 +35,10 @@ void main() {
     // weights and normalise. As shipped: no blur.
     color = vec4(texelFetch(src, c, 0).rgb, 1.0);
     color_mie = vec4(texelFetch(src_mie, c, 0).rgb, 1.0);
+}
+
+void main() {
+    blur();
+    float mu = dot(sky_camera_direction(uv), atmo_sun_direction(params.sun_elevation, params.sun_azimuth));
+    radiance = vec4(color.rgb * atmo_phase_rayleigh(mu) + color_mie.rgb * atmo_phase_mie(mu, ATMO_G), 1.0);
 }
