@@ -1,0 +1,50 @@
+#version 450
+// Progressive path tracing (passes/gi/pathtrace.glsl): params.spp new paths per pixel this
+// frame, averaged into the running mean of every earlier frame's since the accumulation last
+// reset (frame.accum_frame = 0 after any param or camera change, docs/format.md):
+//     mean_j = mean_{j-1} + (batch_j - mean_{j-1}) / (j + 1),   j = the pixel's batch index
+// Every batch has spp samples, so this is the plain mean of all (j + 1) spp samples.
+// Sample s of batch j has index j * spp + s: its random numbers depend only on the pixel, that
+// index and the vertex, so a render is reproducible and two renders with different kept terms
+// trace the same paths. The eye ray goes through the pixel centre (no jitter), so the reference
+// agrees with rasterised methods at edges.
+//
+// The live view interleaves (interleave.glsl): this pass runs on ceil(view / k) threads, each
+// tracing one pixel of its k x k tile, the tile's cell of this frame; carry.comp (before it)
+// copies every pixel's mean forward, since a history image holds two copies that swap every
+// frame. Alpha is 1 once a pixel has a sample.
+//
+// OUT names the accumulated image (a history image; OUT_prev is last frame's); KEEP, when
+// defined, fixes the kept path length instead of params.only_length (the L0 / L1 split passes).
+#include "gi/pathtrace.glsl"
+#include "interleave.glsl"
+#ifndef OUT
+#define OUT radiance
+#define OUT_PREV radiance_prev
+#endif
+#ifndef KEEP
+#define KEEP params.only_length
+#endif
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba32f) uniform writeonly image2D OUT;
+uniform sampler2D OUT_PREV;
+
+void main() {
+    uint n = uint(max(frame.accum_frame, 0));
+    ivec2 p = pt_traced_pixel(ivec2(gl_GlobalInvocationID.xy), n);
+    ivec2 size = imageSize(OUT);
+    if (any(greaterThanEqual(p, size))) return;
+    uint batch_index = n / uint(pt_interleave() * pt_interleave());
+    pathtrace_scene_init(params.scene);
+    vec2 ndc = (vec2(p) + 0.5) / vec2(size) * 2.0 - 1.0;
+    vec4 far_point = frame.inv_view_proj * vec4(ndc, 1.0, 1.0);
+    vec3 ro = frame.camera_pos.xyz;
+    vec3 rd = normalize(far_point.xyz / far_point.w - ro);
+    int spp = max(params.spp, 1);
+    vec3 batch = vec3(0.0);
+    for (int s = 0; s < spp; ++s)
+        batch += pathtrace_radiance(ro, rd, uvec2(p), batch_index * uint(spp) + uint(s), params.bounces, KEEP);
+    batch /= float(spp);
+    vec3 mean = batch_index == 0u ? batch : mix(texelFetch(OUT_PREV, p, 0).rgb, batch, 1.0 / float(batch_index + 1u));
+    imageStore(OUT, p, vec4(mean, 1.0));
+}
