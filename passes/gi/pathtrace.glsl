@@ -28,17 +28,20 @@
 
 const float PATHTRACE_PI = 3.14159265358979;
 
+// Which sequence of paths: another seed gives independent samples (a reference render that
+// shares no path with the renders it judges). Callers may set it before tracing.
+uint pathtrace_seed = 0u;
+
 // Three uniform numbers in [0, 1) for vertex `vertex` of sample `sample_index` of `pixel`.
 vec3 pathtrace_random(uvec2 pixel, uint sample_index, uint vertex) {
-    return vec3(pcg3d(uvec3(pixel, sample_index * 64u + vertex))) * (1.0 / 4294967296.0);
+    return vec3(pcg3d(uvec3(pixel.x + (pathtrace_seed << 16u), pixel.y, sample_index * 64u + vertex))) * (1.0 / 4294967296.0);
 }
 
 // A direction around the unit normal n with the density p(wi) = cos(theta) / pi, from two uniform
 // numbers (Malley's method: uniform on the disk, lifted onto the hemisphere), and its weight
 // f_r cos(theta) / p(wi) for a Lambertian surface of albedo rho, f_r = rho / pi.
 vec3 pathtrace_bounce(vec3 n, vec2 u, vec3 rho, out vec3 weight) {
-    // TODO 1 (000_c9f7e5de708ecbb3.txt L4982-4989, the integral of L f_r cos over the
-    // hemisphere): sample wi with the density cos(theta)/pi and return the weight f_r cos / p.
+    // (The exercise's TODO 1.) sin^2(theta) = u.x, phi = 2 pi u.y has the density cos / pi.
     float sin_t = sqrt(u.x), cos_t = sqrt(max(0.0, 1.0 - u.x)), phi = 2.0 * PATHTRACE_PI * u.y;
     vec3 local = vec3(sin_t * cos(phi), sin_t * sin(phi), cos_t);
     // f_r cos / p = (rho / pi) cos / (cos / pi) = rho: the cosine and the 1/pi cancel.
@@ -51,8 +54,7 @@ vec3 pathtrace_bounce(vec3 n, vec2 u, vec3 rho, out vec3 weight) {
 // L4982-4989 with a delta light: the integral collapses to its one direction).
 vec3 pathtrace_direct(PathtraceHit h) {
     if (pathtrace_scene_id != PATHTRACE_CORNELL) return vec3(0.0);
-    // TODO 2 (L5014-5019, L0: direct lighting arriving at x): the spot's irradiance
-    // (cornell_light_irradiance) times the BRDF rho/pi, and zero when the light is occluded.
+    // (The exercise's TODO 2.) The shadow ray runs from just off the surface to the light.
     vec3 e = cornell_light_irradiance(h.p, h.n);
     if (all(equal(e, vec3(0.0)))) return vec3(0.0);
     vec3 o = h.p + PATHTRACE_OFFSET * h.n;
@@ -61,28 +63,31 @@ vec3 pathtrace_direct(PathtraceHit h) {
 }
 
 // The radiance along the eye ray ro + t rd, the terms L_k for k = 0 .. bounces; keep >= 0 keeps
-// only L_keep (the eye ray's miss, Le seen directly, belongs to L0).
+// only L_keep (the eye ray's miss, Le seen directly, belongs to L0). One call site of the ray
+// query for the eye ray (k = -1) and the bounces: the traversal is inlined once, which halves
+// llvmpipe's compile time of the shader (seconds under load; the frame watchdog counts it).
 vec3 pathtrace_radiance(vec3 ro, vec3 rd, uvec2 pixel, uint sample_index, int bounces, int keep) {
-    int last = keep >= 0 ? min(bounces, keep) : bounces;
     if (keep > bounces) return vec3(0.0);
+    int last = keep >= 0 ? keep : bounces;
     vec3 environment = pathtrace_environment();
-    PathtraceHit h = pathtrace_closest(ro, rd);
-    if (!h.hit) return keep <= 0 ? environment : vec3(0.0);
     vec3 radiance = vec3(0.0), throughput = vec3(1.0);
-    for (int k = 0; k <= last; ++k) {
-        bool kept = keep < 0 || keep == k;
-        if (kept) radiance += throughput * pathtrace_direct(h);
-        // The last vertex's bounce ray only matters when the environment emits.
-        if (k == last && all(equal(environment, vec3(0.0)))) break;
-        vec3 weight;
-        vec3 wi = pathtrace_bounce(h.n, pathtrace_random(pixel, sample_index, uint(k)).xy, h.albedo, weight);
-        throughput *= weight;
-        PathtraceHit next = pathtrace_closest(h.p + PATHTRACE_OFFSET * h.n, wi);
-        if (!next.hit) {
+    PathtraceHit h;
+    for (int k = -1; k <= last; ++k) {
+        bool kept = keep < 0 || keep == max(k, 0);
+        if (k >= 0) {
+            if (kept) radiance += throughput * pathtrace_direct(h);
+            // The last vertex's bounce ray only matters when the environment emits.
+            if (k == last && all(equal(environment, vec3(0.0)))) break;
+            vec3 weight;
+            rd = pathtrace_bounce(h.n, pathtrace_random(pixel, sample_index, uint(k)).xy, h.albedo, weight);
+            ro = h.p + PATHTRACE_OFFSET * h.n;
+            throughput *= weight;
+        }
+        h = pathtrace_closest(ro, rd);
+        if (!h.hit) {
             if (kept) radiance += throughput * environment;
             break;
         }
-        h = next;
     }
     return radiance;
 }

@@ -36,6 +36,7 @@ void main() {
     if (any(greaterThanEqual(p, size))) return;
     uint batch_index = n / uint(pt_interleave() * pt_interleave());
     pathtrace_scene_init(params.scene);
+    pathtrace_seed = uint(params.seed);
     vec2 ndc = (vec2(p) + 0.5) / vec2(size) * 2.0 - 1.0;
     vec4 far_point = frame.inv_view_proj * vec4(ndc, 1.0, 1.0);
     vec3 ro = frame.camera_pos.xyz;
