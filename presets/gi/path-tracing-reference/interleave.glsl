@@ -1,5 +1,5 @@
 // Interleaved progressive tracing: the live view traces one pixel of every k x k tile per frame
-// (k = params.interleave, a power of two), visiting the tile's pixels in Bayer order, so a frame
+// (k = params.interleave, rounded up to a power of two), visiting the tile's pixels in Bayer order, so a frame
 // costs 1/k^2 of a full one and the picture fills in evenly. Pixel p is traced on the frames
 // n = phase(p) (mod k^2) after an accumulation reset; on its j-th traced frame it takes the
 // samples j * spp .. j * spp + spp - 1, the same sample indices as with k = 1: interleaving
@@ -7,7 +7,9 @@
 #ifndef PASSLAB_GI_PT_INTERLEAVE_GLSL
 #define PASSLAB_GI_PT_INTERLEAVE_GLSL
 
-int pt_interleave() { return clamp(params.interleave, 1, 8); }
+// k: params.interleave rounded up to a power of two (the trace pass dispatches
+// ceil(view / params.interleave) threads, at least ceil(view / k); the extra ones fall outside).
+int pt_interleave() { return 1 << (findMSB(clamp(params.interleave, 1, 8) - 1) + 1); }
 
 // The Bayer index of cell c of a 2^bits x 2^bits tile: 2 (x ^ y) + y per bit, the lowest bits
 // most significant (2x2: [[0, 2], [3, 1]]).
