@@ -10,6 +10,7 @@
 #            PASSLAB_ROOT set to this tree)
 #   --quick  32x18, N = 4..64, a 2048-spp reference (the ctest entry, ~20 s)
 #   --write  write presets/gi/path-tracing-reference/convergence.svg (else only print)
+# Renders get a 600 s frame watchdog (a loaded machine stretches a 0.3 s frame past the default 20 s).
 # Exits 1 when the slope is outside -0.5 +- 0.1. Run from the repository root; python3 stdlib only.
 set -eu
 passlab=${1:-build/default/lab/passlab}
@@ -29,7 +30,7 @@ PER_FRAME = 32  # paths per pixel per frame; llvmpipe's 65535-iteration loop lim
 def render(spp, seed, out):
     per = min(spp, PER_FRAME)
     args = [passlab, "render", PRESET, "--size", size, "--frames", str(spp // per), "--set", "interleave=1",
-            "--set", "spp=%d" % per, "--set", "seed=%d" % seed, "--pass", "radiance", "--format", "exr", "-o", out]
+            "--set", "spp=%d" % per, "--set", "seed=%d" % seed, "--pass", "radiance", "--format", "exr", "--timeout", "600", "-o", out]
     t = time.time()
     p = subprocess.run(args, capture_output=True, text=True)
     if p.returncode != 0:
