@@ -35,4 +35,7 @@ vec3 rsm_irradiance(vec3 x, vec3 n) {
         }
     return e;
 }
+
+// What the shared low-res gather and compose passes call (gi/rsm_lowres.comp, gi/rsm_compose.frag).
+vec3 gi_irradiance(vec3 x, vec3 n) { return rsm_irradiance(x, n); }
 #endif

@@ -1,8 +1,9 @@
 #version 450
-// The gather at an eighth of the view's resolution in each axis (RSM_DIV) (the RSM paper's screen-space
+// The gather at 1/RSM_DIV of the view's resolution in each axis (the RSM paper's screen-space
 // interpolation: indirect light is smooth, so it is computed sparsely and interpolated where the
-// geometry agrees, compose.frag). Each low-res texel gathers at the G-buffer point at its
-// centre and keeps that point's position and normal for the upsampling's weights.
+// geometry agrees, rsm_compose.frag). Each low-res texel gathers gi_irradiance (the preset's
+// gather.glsl: the RSM's texels or the VPLs) at the G-buffer point at the centre of its block and
+// keeps that point's position and normal for the upsampling's weights.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "gather.glsl"
 uniform sampler2D g_normal, g_pos;
@@ -13,7 +14,7 @@ void main() {
     ivec2 px = min(q * RSM_DIV + RSM_DIV / 2, ivec2(frame.resolution.xy) - 1);
     vec4 pos = texelFetch(g_pos, px, 0);
     vec3 n = texelFetch(g_normal, px, 0).xyz;
-    vec3 e = pos.w > 0.0 ? rsm_irradiance(pos.xyz, n) : vec3(0.0);
+    vec3 e = pos.w > 0.0 ? gi_irradiance(pos.xyz, n) : vec3(0.0);
     imageStore(ind, q, vec4(e, pos.w));
     imageStore(ind_n, q, vec4(n, 0.0));
     imageStore(ind_p, q, pos);
