@@ -1,10 +1,12 @@
 // Direct light of the Cornell spot with shadow-map visibility: the spot's depth from the light
-// camera (`light` of gi/cornell.glsl's TOML), compared with a 3x3 PCF and a slope-scaled bias.
-// The graph binds the depth map as `spot_depth` (d32, clamp, nearest).
+// camera (`light` of gi/cornell.glsl's TOML), compared by the sampler (one bilinear 2x2 PCF tap:
+// the cheapest soft edge on llvmpipe) after a normal offset that grows at grazing angles.
+// The graph binds the depth map as `spot_depth`:
+//   spot_depth = { format = "d32", size = 1024, sampler = { compare = "less_equal", address = "clamp" } }
 #ifndef PASSLAB_GI_RSM_DIRECT_GLSL
 #define PASSLAB_GI_RSM_DIRECT_GLSL
 #include "gi/cornell.glsl"
-uniform sampler2D spot_depth;
+uniform sampler2DShadow spot_depth;
 
 float rsm_spot_visibility(vec3 p, vec3 n) {
     vec3 l = normalize(CORNELL_LIGHT_POS - p);
@@ -16,11 +18,7 @@ float rsm_spot_visibility(vec3 p, vec3 n) {
     vec3 s = c.xyz / c.w;
     vec2 uv = s.xy * 0.5 + 0.5;
     if (c.w <= 0.0 || any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 0.0;
-    vec2 ts = 1.0 / vec2(textureSize(spot_depth, 0));
-    float lit = 0.0;
-    for (int y = -1; y <= 1; ++y)
-        for (int x = -1; x <= 1; ++x) lit += s.z <= texture(spot_depth, uv + vec2(x, y) * ts).r ? 1.0 : 0.0;
-    return lit / 9.0;
+    return texture(spot_depth, vec3(uv, s.z));
 }
 
 // L0 = rho/pi * I(w) cos / d^2 * V (the spot itself is not visible to the camera).
