@@ -1,10 +1,17 @@
 #version 450
 // One-bounce reference (test-only): per view pixel, the indirect radiance after exactly one
-// diffuse bounce, L1(x) = rho_x/pi * Int L0(y) cos dw, estimated by Monte Carlo with params.spp cosine-
-// weighted rays (pdf cos/pi, so L1 = rho_x * mean L0(y)); L0(y) = rho_y/pi * E_direct(y) with a
+// diffuse bounce, L1(x) = rho_x/pi * Int L0(y) cos dw, estimated by Monte Carlo with params.spp
+// cosine-weighted rays (pdf cos/pi, so L1 = rho_x * mean L0(y)); L0(y) = rho_y/pi * E_direct(y) with a
 // ray-traced shadow (000_c9f7e5de708ecbb3.txt L4919-5045: the Neumann series' first indirect
 // term). The points and normals are the view G-buffer's (`g_pos`, `g_normal`, `g_albedo`), so
 // the reference and the method are compared on the same surfaces. Writes `reference` (rgb = L1).
+//
+// The pass runs repeat = ceil(spp / VPL_REF_CHUNK) times, each iteration VPL_REF_CHUNK more
+// samples of the same Hammersley set folded into a running mean: llvmpipe ends loops after 65535
+// iterations counted over the whole invocation (gallivm's LP_MAX_TGSI_LOOP_ITERATIONS, "shared
+// between every loop": an inner loop's iterations add up across its re-entries), so one
+// invocation tracing 1024 samples through the BVH silently stopped after ~500 of them (measured:
+// spp 1024 gave half the radiance of spp 512).
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "gi/vpl_trace.glsl"
 uniform sampler2D g_albedo, g_normal, g_pos;
