@@ -5,6 +5,7 @@
 // (vpl_generate.comp), the maps' vertex shaders and the gather.
 #ifndef PASSLAB_GI_VPL_GLSL
 #define PASSLAB_GI_VPL_GLSL
+#include "gi/cornell.glsl"
 
 const int VPL_SLOTS = 1024;     // layers of vpl_maps: at most this many VPLs (paths x bounces)
 const float VPL_FAR = 3.5;      // map depth = distance / VPL_FAR; the box's diagonal is 2 sqrt 3 = 3.46
@@ -24,6 +25,21 @@ layout(std430) buffer VplArgs {
     uint base;        // first slot of this frame's window (slots base .. base + count - 1, mod slots)
     uint slots;       // VPL slots in use: paths * bounces, at most VPL_SLOTS
 } vpl_args;
+
+const int VPL_SURFACES = CORNELL_WALLS + 6 * CORNELL_BLOCKS;
+
+// The box's 17 surfaces (5 walls, 6 faces of each block) as instances of the `plane` mesh of
+// size 2, for the VPL maps (vpl_map.vert).
+// world_from_object of surface k for the `plane` of size 2 ([-1,1]^2, normal +Y): a wall, or face
+// f = 0..5 of a block (+X, -X, +Y, -Y, +Z, -Z): the plane halved onto the unit cube's face.
+mat4 vpl_surface(int k) {
+    if (k < CORNELL_WALLS) return cornell_wall(k);
+    int f = (k - CORNELL_WALLS) % 6;
+    const float q = 1.5707963;
+    mat4 face = f == 0 ? cornell_rot_z(-q) : f == 1 ? cornell_rot_z(q) : f == 2 ? mat4(1.0)
+              : f == 3 ? cornell_rot_x(2.0 * q) : f == 4 ? cornell_rot_x(q) : cornell_rot_x(-q);
+    return cornell_block((k - CORNELL_WALLS) / 6) * face * cornell_translate(vec3(0.0, 0.5, 0.0)) * cornell_scale(vec3(0.5));
+}
 
 // A right-handed frame (t, b, n) about unit n.
 mat3 vpl_frame(vec3 n) {

@@ -10,19 +10,6 @@
 layout(location = 0) in vec3 position;
 out gl_PerVertex { vec4 gl_Position; float gl_ClipDistance[1]; };
 
-const int VPL_SURFACES = CORNELL_WALLS + 6 * CORNELL_BLOCKS;
-
-// world_from_object of surface k for the `plane` of size 2 ([-1,1]^2, normal +Y): a wall, or face
-// f = 0..5 of a block (+X, -X, +Y, -Y, +Z, -Z): the plane halved onto the unit cube's face.
-mat4 vpl_surface(int k) {
-    if (k < CORNELL_WALLS) return cornell_wall(k);
-    int f = (k - CORNELL_WALLS) % 6;
-    const float q = 1.5707963;
-    mat4 face = f == 0 ? cornell_rot_z(-q) : f == 1 ? cornell_rot_z(q) : f == 2 ? mat4(1.0)
-              : f == 3 ? cornell_rot_x(2.0 * q) : f == 4 ? cornell_rot_x(q) : cornell_rot_x(-q);
-    return cornell_block((k - CORNELL_WALLS) / 6) * face * cornell_translate(vec3(0.0, 0.5, 0.0)) * cornell_scale(vec3(0.5));
-}
-
 void main() {
     int k = gl_InstanceIndex % VPL_SURFACES;
     uint slot = (vpl_args.base + uint(gl_InstanceIndex / VPL_SURFACES)) % vpl_args.slots;

@@ -1,11 +1,11 @@
 #version 450
-// Test-only probes. The clamp (gather.glsl): for every live VPL slot s (texel (s % 32, s / 32)),
+// Test-only probes. The clamp (gi/vpl_gather.glsl): for every live VPL slot s (texel (s % 32, s / 32)),
 // a receiver 2.8 cm in front of it, off its normal by 45 degrees and facing it, where the point
 // light's 1/d^2 is close to its singularity. The clamp bounds one VPL's irradiance by
 // Phi/pi * 1/c^2 (both cosines <= 1), so r = E_s(x) * pi * c^2 / lum(Phi_s) (luminance-free: the
 // green channel) must be <= 1; without the clamp it is cos cos * c^2 / d^2 = 0.5 * 0.01 / 0.0008 = 6.25.
 layout(local_size_x = 8, local_size_y = 8) in;
-#include "gather.glsl"
+#include "gi/vpl_gather.glsl"
 layout(rgba32f) uniform writeonly image2D clamp_probe, map_means;
 
 // The mean depth of VPL slot s's shadow map (map_means: the incremental test compares the maps

@@ -9,8 +9,8 @@
 // singular next to the VPL: unclamped, a VPL in a corner paints a bright blotch on the wall it
 // touches (the catalogue's pitfall); clamping d at c (params.clamp) bounds each VPL's share and
 // loses a little energy near it. Then L1 = rho/pi * E.
-#ifndef IR_GATHER_GLSL
-#define IR_GATHER_GLSL
+#ifndef PASSLAB_GI_VPL_GATHER_GLSL
+#define PASSLAB_GI_VPL_GATHER_GLSL
 #include "gi/vpl.glsl"
 uniform sampler2DArray vpl_maps;
 
@@ -26,15 +26,11 @@ float ir_visibility(Vpl v, uint slot, vec3 x, vec3 n) {
 }
 
 vec3 ir_vpl_irradiance(Vpl v, uint slot, vec3 x, vec3 n) {
-    // TODO: the irradiance VPL v sends to x (000_c9f7e5de708ecbb3.txt L5160-5172: "model the
-    // light bounces as light sources ... convert indirect into direct light transport", "render
-    // considering all the VPL and their shadow maps"). VPL v at y = v.position.xyz with normal
-    // n_y = v.normal.xyz reflects the flux Phi = v.flux.rgb as a diffuse point emitter:
-    //     E_v(x) = Phi / pi * max(0, cos theta_y) * max(0, cos theta_x) / max(d^2, c^2) * V
-    // with w = (x - y) / d, cos theta_y = n_y . w, cos theta_x = n . (-w), c = params.clamp (the
-    // 1/d^2 is singular next to the VPL; the clamp bounds each VPL's share), and V =
-    // ir_visibility(v, slot, x, n) from the VPL's paraboloid shadow map.
-    return vec3(0.0);
+    vec3 w = x - v.position.xyz;
+    float d2 = dot(w, w);
+    w *= inversesqrt(d2);
+    float g = max(dot(v.normal.xyz, w), 0.0) * max(dot(n, -w), 0.0) / d2;
+    return g > 0.0 ? v.flux.rgb / 3.14159265 * g * ir_visibility(v, slot, x, n) : vec3(0.0);
 }
 
 vec3 ir_irradiance(vec3 x, vec3 n) {

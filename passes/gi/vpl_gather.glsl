@@ -9,8 +9,8 @@
 // singular next to the VPL: unclamped, a VPL in a corner paints a bright blotch on the wall it
 // touches (the catalogue's pitfall); clamping d at c (params.clamp) bounds each VPL's share and
 // loses a little energy near it. Then L1 = rho/pi * E.
-#ifndef IR_GATHER_GLSL
-#define IR_GATHER_GLSL
+#ifndef PASSLAB_GI_VPL_GATHER_GLSL
+#define PASSLAB_GI_VPL_GATHER_GLSL
 #include "gi/vpl.glsl"
 uniform sampler2DArray vpl_maps;
 
@@ -29,7 +29,7 @@ vec3 ir_vpl_irradiance(Vpl v, uint slot, vec3 x, vec3 n) {
     vec3 w = x - v.position.xyz;
     float d2 = dot(w, w);
     w *= inversesqrt(d2);
-    float g = max(dot(v.normal.xyz, w), 0.0) * max(dot(n, -w), 0.0) / d2;
+    float g = max(dot(v.normal.xyz, w), 0.0) * max(dot(n, -w), 0.0) / max(d2, params.clamp * params.clamp);
     return g > 0.0 ? v.flux.rgb / 3.14159265 * g * ir_visibility(v, slot, x, n) : vec3(0.0);
 }
 
