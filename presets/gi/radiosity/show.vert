@@ -1,0 +1,15 @@
+#version 450
+// Pass 2 (000_c9f7e5de708ecbb3.txt L5072: "render using texture maps"): the Cornell box's
+// instances, wall planes (MESH = 0) or blocks (MESH = 1), placed as gi/cornell.glsl says.
+#include "gi/cornell.glsl"
+
+layout(location = 0) in vec3 position;
+layout(location = 0) out vec3 object_pos;
+layout(location = 1) flat out int instance;
+
+void main() {
+    mat4 m = MESH == 0 ? cornell_wall(gl_InstanceIndex) : cornell_block(gl_InstanceIndex);
+    object_pos = position;
+    instance = gl_InstanceIndex;
+    gl_Position = frame.view_proj * (m * vec4(position, 1.0));
+}
