@@ -1,6 +1,7 @@
 #version 450
-// Pass 2 (000_c9f7e5de708ecbb3.txt L5072: "render using texture maps"): the Cornell box's
-// instances, wall planes (MESH = 0) or blocks (MESH = 1), placed as gi/cornell.glsl says.
+// The Cornell box's instances for a draw pass, wall planes (MESH = 0) or blocks (MESH = 1), placed
+// as gi/cornell.glsl says; the fragment gets the object-space position and the instance (the
+// radiosity light map and the photon-map gather look their surface up from them).
 #include "gi/cornell.glsl"
 
 layout(location = 0) in vec3 position;
