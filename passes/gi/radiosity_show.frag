@@ -1,8 +1,14 @@
 #version 450
-// Pass 2: each fragment shows the solved radiance of its patch (the last iterate), "light map"
-// style: with `interpolate` bilinearly between the centres of the four nearest patches of the
-// same surface (Gouraud-like smoothing, as radiosity images are usually shown), else flat.
+// Draws a light map over the patches of gi/radiosity_patches.glsl (000_c9f7e5de708ecbb3.txt
+// L5072: "render using texture maps"): each fragment shows row RAD_ROW of the buffer `radiance`
+// at its patch (radiosity: the last iterate; photon mapping: the baked density estimate); with
+// params.interpolate bilinearly between the centres of the four nearest patches of the same
+// surface (Gouraud-like smoothing, as radiosity images are usually shown), else flat.
 #include "gi/radiosity_patches.glsl"
+
+#ifndef RAD_ROW
+#define RAD_ROW 0
+#endif
 
 layout(std430) readonly buffer Radiance { vec4 value[]; } radiance;
 
@@ -14,7 +20,7 @@ layout(location = 0) out vec4 color;
 // interpolation leaves it out.
 vec4 patch_radiance(RadSurface s, ivec2 c) {
     c = clamp(c, ivec2(0), ivec2(s.n - 1));
-    vec3 l = radiance.value[params.iterations * RAD_PATCHES + s.first + c.y * s.n + c.x].rgb;
+    vec3 l = radiance.value[(RAD_ROW) * RAD_PATCHES + s.first + c.y * s.n + c.x].rgb;
     return l.r < 0.0 ? vec4(0.0) : vec4(l, 1.0);
 }
 
