@@ -24,6 +24,7 @@ const int TP_CELLS = (TP_N - 1) * (TP_N - 1) * (TP_N - 1);
 const int TP_TETS = 6 * TP_CELLS;
 const float TP_EXTENT = 0.9;
 const int TP_SH = 9;  // three bands (L2813: "3rd spherical harmonics coefficients")
+const int TP_SURFACES = 18;  // the flat surfaces of gi/radiosity_patches.glsl (the table path)
 
 vec3 tetrahedral_probe_position(int i) {
     ivec3 c = ivec3(i % TP_N, (i / TP_N) % TP_N, i / (TP_N * TP_N));
@@ -65,6 +66,18 @@ void tetrahedral_locate(vec3 x, out int tet, out vec4 weights) {
     vec3 l = inv * (x - intBitsToFloat(tets.rec[5 * tet + 4].xyz));
     weights = vec4(l, 1.0 - l.x - l.y - l.z);
 }
+
+#ifdef TP_TABLE
+// The probes' irradiance per surface normal (the preset's table.comp): E of probe k for surface s
+// at k * TP_SURFACES + s.
+layout(std140) uniform Table { vec4 e[TP_PROBES * TP_SURFACES]; } table;
+
+// The irradiance of surface s blended from the tetrahedron's four probes v with weights w.
+vec3 tetrahedral_blend_table(ivec4 v, vec4 w, int s) {
+    return w.x * table.e[v.x * TP_SURFACES + s].rgb + w.y * table.e[v.y * TP_SURFACES + s].rgb +
+           w.z * table.e[v.z * TP_SURFACES + s].rgb + w.w * table.e[v.w * TP_SURFACES + s].rgb;
+}
+#endif
 
 // SH coefficient i blended from the tetrahedron's four probes v with weights w (L2814).
 vec3 tetrahedral_blend(ivec4 v, vec4 w, int i) {

@@ -1,12 +1,14 @@
 #version 450
 // The lookup of gi/tetrahedral_probes.glsl, the one show.frag uses, checked where the answer is
 // known. Threads 0 .. TP_PROBES - 1: at probe i's own position the blend must return probe i's SH
-// exactly (max |difference| over its 27 numbers into exact[i]). Threads TP_PROBES ..: random
+// exactly, and the table path's blend its irradiance for every surface (max |difference| over
+// those 27 + 54 numbers into exact[i]). Threads TP_PROBES ..: random
 // points of the lattice, 1 in 8 snapped onto a cell face, edge or corner (where tetrahedra meet
 // and rounding decides), write their raw weights and weights - sum to `samples`.
 layout(local_size_x = 64) in;
 
 #define TP_LOOKUP 1
+#define TP_TABLE 1
 #include "gi/tetrahedral_probes.glsl"
 #include "common/hash.glsl"
 
@@ -23,6 +25,9 @@ void main() {
         tetrahedral_locate(tetrahedral_probe_position(t), tet, w);
         float d = 0.0;
         for (int i = 0; i < TP_SH; ++i) d = max(d, length(tetrahedral_coeff(tet, w, i) - probes.coeff[t * TP_SH + i].rgb));
+        vec4 wn = max(w, 0.0) / dot(max(w, 0.0), vec4(1.0));
+        for (int s = 0; s < TP_SURFACES; ++s)
+            d = max(d, length(tetrahedral_blend_table(tets.rec[5 * tet], wn, s) - table.e[t * TP_SURFACES + s].rgb));
         exact.diff[t] = d;
     } else if (t < TP_PROBES + TP_SAMPLES) {
         int k = t - TP_PROBES;
