@@ -16,6 +16,7 @@
 layout(local_size_x = 64) in;
 
 #include "gi/photon_map.glsl"
+#include "gi/photon_texel.glsl"
 #include "gi/radiosity_albedo.glsl"
 
 layout(std430) readonly buffer Photons { vec4 rec[]; } photons;
@@ -26,11 +27,9 @@ layout(std430) writeonly buffer Radiance { vec4 value[]; } radiance;
 void main() {
     int p = int(gl_GlobalInvocationID.x);
     if (p >= RAD_PATCHES) return;
-    RadSurface s = radiosity_surface(radiosity_surface_of_patch(p));
-    int local = p - s.first;
-    vec2 ab = (vec2(local % s.n, local / s.n) + 0.5) / float(s.n);
-    vec3 x = (radiosity_world_from_object(s) * vec4(radiosity_object_point(s, ab), 1.0)).xyz;
-    vec3 n = radiosity_world_normal(s);
+    RadSurface s;
+    vec3 x, n;
+    photon_texel(p, s, x, n);
     float r = params.radius;
     ivec3 lo = photon_cell_coords(x - r), hi = photon_cell_coords(x + r);
     vec3 flux = vec3(0.0);
@@ -40,12 +39,8 @@ void main() {
                 int c = photon_cell_index(ivec3(cx, cy, cz));
                 for (uint i = starts.start[c]; i < starts.start[c + 1]; ++i) {
                     uint k = 3u * sorted.record[i];
-                    vec4 a = photons.rec[k], b = photons.rec[k + 1u], d = photons.rec[k + 2u];
-                    vec3 dx = a.xyz - x;
-                    // inside the sphere, and on this side of the surface (not the photons on the
-                    // other face of a block edge or the wall behind a corner)
-                    if (dot(dx, dx) < r * r && dot(b.xyz, n) > 0.5) flux += vec3(a.w, b.w, d.w);
+                    flux += photon_contribution(photons.rec[k], photons.rec[k + 1u], photons.rec[k + 2u], x, n, r);
                 }
             }
-    radiance.value[p] = vec4(radiosity_albedo(s) / 3.14159265 * flux / (3.14159265 * r * r), 1.0);
+    radiance.value[p] = vec4(photon_radiance(radiosity_albedo(s), flux, r), 1.0);
 }
