@@ -49,9 +49,7 @@ const ivec3 TP_PERM[6] = ivec3[](ivec3(0, 1, 2), ivec3(0, 2, 1), ivec3(1, 0, 2),
 // The tetrahedra: record 5t = probe indices, 5t + 1 .. 5t + 3 = the columns of the inverse edge
 // matrix, 5t + 4 = v3 (build.comp); and the probes' SH (TP_SH rgb coefficients each).
 layout(std430) readonly buffer Tets { ivec4 rec[]; } tets;
-// A uniform block, not a storage buffer: 18 KB fits, and on lavapipe the 36 loads per fragment
-// cost about half as much from a uniform block (measured: 96 -> 52 ms a frame under load).
-layout(std140) uniform Probes { vec4 coeff[TP_PROBES * TP_SH]; } probes;
+layout(std430) readonly buffer Probes { vec4 coeff[]; } probes;
 
 // The tetrahedron containing x (clamped into the lattice) and x's barycentric coordinates in it.
 void tetrahedral_locate(vec3 x, out int tet, out vec4 weights) {
@@ -70,7 +68,7 @@ void tetrahedral_locate(vec3 x, out int tet, out vec4 weights) {
 #ifdef TP_TABLE
 // The probes' irradiance per surface normal (the preset's table.comp): E of probe k for surface s
 // at k * TP_SURFACES + s.
-layout(std140) uniform Table { vec4 e[TP_PROBES * TP_SURFACES]; } table;
+layout(std430) readonly buffer Table { vec4 e[]; } table;
 
 // The irradiance of surface s blended from the tetrahedron's four probes v with weights w.
 vec3 tetrahedral_blend_table(ivec4 v, vec4 w, int s) {

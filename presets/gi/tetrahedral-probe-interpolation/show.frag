@@ -5,7 +5,8 @@
 // bounce. With `path = table` (default) the four probes' irradiance for this surface's normal is
 // blended instead (table.comp; equal by linearity, 4 loads instead of 36). Target 1 gets the raw
 // barycentric weights and target 2 their sum - 1, so the tests check the weights this very shader
-// used.
+// used (compiled with WRITE_WEIGHTS = 1 in the test-only passes: the two float targets cost more
+// than the shading on lavapipe).
 #define TP_LOOKUP 1
 #define TP_TABLE 1
 #include "gi/tetrahedral_probes.glsl"
@@ -17,8 +18,10 @@ layout(location = 1) flat in int instance;
 layout(location = 2) in vec3 world_pos;
 layout(location = 3) in vec3 world_normal;
 layout(location = 0) out vec4 color;
+#if WRITE_WEIGHTS
 layout(location = 1) out vec4 out_weights;
 layout(location = 2) out float out_sum;
+#endif
 
 void main() {
     vec3 x = world_pos, n = normalize(world_normal);
@@ -38,6 +41,8 @@ void main() {
     vec3 l = cornell_albedo(MESH, instance) / 3.14159265 * max(e, 0.0);
     if (params.show == SHOW_WEIGHTS) l = w.yzw;  // the barycentric weights as a colour
     color = vec4(l * (params.show == SHOW_WEIGHTS ? 1.0 : params.exposure), 1.0);
+#if WRITE_WEIGHTS
     out_weights = w;
     out_sum = w.x + w.y + w.z + w.w - 1.0;
+#endif
 }
