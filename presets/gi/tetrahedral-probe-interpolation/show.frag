@@ -5,8 +5,8 @@
 // bounce. With `path = table` (default) the four probes' irradiance for this surface's normal is
 // blended instead (table.comp; equal by linearity, 4 loads instead of 36). Target 1 gets the raw
 // barycentric weights and target 2 their sum - 1, so the tests check the weights this very shader
-// used (compiled with WRITE_WEIGHTS = 1 in the test-only passes: the two float targets cost more
-// than the shading on lavapipe).
+// used (compiled with WRITE_WEIGHTS = 1 in the test-only passes). The path is a define, not a
+// branch on the param: on lavapipe the untaken SH branch still cost about a third of the frame.
 #define TP_LOOKUP 1
 #define TP_TABLE 1
 #include "gi/tetrahedral_probes.glsl"
@@ -31,13 +31,13 @@ void main() {
     vec3 e = vec3(0.0);
     ivec4 v = tets.rec[5 * tet];
     vec4 wn = max(w, 0.0) / dot(max(w, 0.0), vec4(1.0));
-    if (params.path == PATH_TABLE) {
-        e = tetrahedral_blend_table(v, wn, radiosity_surface_of_hit(MESH, instance, object_pos));
-    } else {
-        float y[9];
-        tetrahedral_sh9(n, y);
-        for (int i = 0; i < TP_SH; ++i) e += tetrahedral_sh_band_factor(i) * tetrahedral_blend(v, wn, i) * y[i];
-    }
+#if TP_SH_PATH
+    float y[9];
+    tetrahedral_sh9(n, y);
+    for (int i = 0; i < TP_SH; ++i) e += tetrahedral_sh_band_factor(i) * tetrahedral_blend(v, wn, i) * y[i];
+#else
+    e = tetrahedral_blend_table(v, wn, radiosity_surface_of_hit(MESH, instance, object_pos));
+#endif
     vec3 l = cornell_albedo(MESH, instance) / 3.14159265 * max(e, 0.0);
     if (params.show == SHOW_WEIGHTS) l = w.yzw;  // the barycentric weights as a colour
     color = vec4(l * (params.show == SHOW_WEIGHTS ? 1.0 : params.exposure), 1.0);

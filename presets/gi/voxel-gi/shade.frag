@@ -4,7 +4,9 @@
 // indirect bounce gathered by 6 cones over the hemisphere (one along the normal, five at 60
 // degrees; weights 0.25 and 0.15 approximating the cosine lobe, summing to 1), so
 // L = (rho / pi) E_direct V + rho * sum_k w_k L_cone,k. By default the cones are traced once per
-// surface cell (gather.comp) and interpolated here; `per_pixel` traces them for every fragment.
+// surface cell (gather.comp) and interpolated here; `per_pixel` traces them for every fragment
+// (the passes compiled with VX_PER_PIXEL = 1: a define, since an untaken branch still costs on
+// lavapipe).
 #define VX_CONES 1
 #include "gi/voxel_scene.glsl"
 #include "gi/voxel_cone.glsl"
@@ -26,12 +28,12 @@ void main() {
     vec3 direct = params.light * albedo / 3.14159265 * cornell_light_irradiance(x, n) * v;
     vec3 indirect = vec3(0.0);
     if (params.indirect) {
-        if (params.per_pixel) {
-            indirect = voxel_hemisphere(x + n * 1.5 * VX_SIZE, n);  // the real thing: 6 cones here
-        } else {
-            vec4 g = textureLod(indirect_volume, voxel_uvw(x), 0.0);  // gathered per cell
-            indirect = g.rgb / max(g.a, 1e-4);
-        }
+#if VX_PER_PIXEL
+        indirect = voxel_hemisphere(x + n * 1.5 * VX_SIZE, n);  // the real thing: 6 cones here
+#else
+        vec4 g = textureLod(indirect_volume, voxel_uvw(x), 0.0);  // gathered per cell
+        indirect = g.rgb / max(g.a, 1e-4);
+#endif
         indirect *= albedo;
     }
     color = vec4((direct + indirect) * params.exposure, 1.0);
