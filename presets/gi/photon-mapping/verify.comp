@@ -1,5 +1,5 @@
 #version 450
-// Test-only (params.verify): the grid gather of gather.comp against brute force. At 256 texels
+// Test-only (params.verify): the grid gather of gather.comp against brute force. At 64 texels
 // spread over every surface, sum the photons within r by visiting all 262144 records instead of
 // the grid's cells, and store the relative difference to the light map the frame draws (the two
 // sums add the same photons in another order: float rounding only). One work group per texel, its
@@ -19,7 +19,7 @@ layout(std430) writeonly buffer GatherError { float e[]; } gather_error;
 
 void main() {
     int i = int(gl_WorkGroupID.x), lane = int(gl_LocalInvocationID.x);
-    int p = (i * 108 + 37) % RAD_PATCHES;  // 108 = 27648 / 256: every surface gets some
+    int p = (i * 432 + 37) % RAD_PATCHES;  // 432 = 27648 / 64: every surface gets some
     RadSurface s;
     vec3 x, n;
     photon_texel(p, s, x, n);
