@@ -1,7 +1,9 @@
 #version 450
 // One sub-step of a PatchMatch iteration (003_cfc3b5b225ddab3d.txt L93-184; Barnes et al. 2009).
-// The pass runs 8 times a frame (repeat = 8, nnf_in/nnf_out ping-pong): sub-steps 0..6
-// propagate, sub-step 7 is the random search. Frame n is iteration n + 1 (frame.accum_frame).
+// An iteration is 8 sub-steps: 0..6 propagate, 7 is the random search. The pass runs
+// `substeps` times a frame (nnf_in/nnf_out ping-pong), so sub-step g = accum_frame * substeps +
+// pl_iteration of the run is sub-step g % 8 of iteration g / 8: with substeps = 8 (the tests)
+// a frame is an iteration, with 2 (the live view) an iteration takes 4 frames.
 //
 // Propagation (L148-158): with a = (x, y), the candidates are f(x-1, y) + (1, 0) and
 // f(x, y-1) + (0, 1); "next iteration, use bottom and right neighbours": f(x+1, y) - (1, 0),
@@ -68,9 +70,10 @@ void main() {
     vec4 cur = texelFetch(nnf_in, g_a, 0);
     g_best = nnf_target(cur);
     g_best_d = nnf_distance(cur);
-    int iteration = frame.accum_frame;
-    if (pl_iteration < 7)
-        propagate(params.jump ? 1 << (6 - pl_iteration) : 1, iteration);
+    int g = frame.accum_frame * pl_iteration_count + pl_iteration;
+    int iteration = g / 8, sub = g % 8;
+    if (sub < 7)
+        propagate(params.jump ? 1 << (6 - sub) : 1, iteration);
     else
         random_search(iteration);
     imageStore(nnf_out, g_a, nnf_encode(g_best, g_best_d));

@@ -1,6 +1,7 @@
 #version 450
-// Sum over A of d(a, f(a)) after this frame's iteration, into totals[iteration] (the last
-// element for every later iteration). One work group, each thread summing a fixed stride of
+// Sum over A of d(a, f(a)) at the end of the frame, into totals[i] for the iteration i the
+// frame's last sub-step belongs to (step.comp; the last element for every later iteration):
+// after an iteration's last sub-step, the total of that iteration. One work group, each thread summing a fixed stride of
 // pixels, then a tree in shared memory: the order of additions is fixed, so the sum is
 // deterministic, and since every d(a, f(a)) only ever decreases (a candidate replaces f(a)
 // only when strictly closer) and rounding is monotone, the totals cannot increase.
@@ -24,5 +25,7 @@ void main() {
         if (t < k) partial[t] += partial[t + k];
         barrier();
     }
-    if (t == 0u) totals.total[min(frame.accum_frame, totals.total.length() - 1)] = partial[0];
+    int n = params.substeps / 2 * 2;   // sub-steps a frame, as the step pass's repeat
+    int iteration = (frame.accum_frame * n + n - 1) / 8;
+    if (t == 0u) totals.total[min(iteration, totals.total.length() - 1)] = partial[0];
 }
