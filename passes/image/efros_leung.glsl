@@ -6,6 +6,7 @@
 //
 // The includer defines, before including this file:
 //   vec4 el_canvas(ivec2 p)  the image being built: rgb, and a > 0 where p is already known
+//                            (a multiplies the texel's weight: 1 for a known texel)
 //   bool el_valid(ivec2 q)   whether q may be a candidate centre (its whole window in the source)
 // d is the sum of squared RGB differences over the known texels of the window, each weighted by
 // a Gaussian of its distance to p (sigma = N / 6.4, the paper's choice) and normalised by the
@@ -30,7 +31,7 @@ void el_gather(ivec2 p, int h) {
         for (int dx = -h; dx <= h; ++dx) {
             vec4 c = el_canvas(p + ivec2(dx, dy));
             if (c.a <= 0.0) continue;
-            float w = exp(-float(dx * dx + dy * dy) / (2.0 * sigma * sigma));
+            float w = c.a * exp(-float(dx * dx + dy * dy) / (2.0 * sigma * sigma));
             el_off[el_count] = ivec2(dx, dy);
             el_col[el_count] = c.rgb;
             el_wt[el_count] = w;

@@ -14,6 +14,12 @@ layout(local_size_x = 8, local_size_y = 8) in;
 uniform sampler2D known;
 uniform sampler2D valid;
 layout(rgba8) uniform image2D canvas;
+#ifdef GUIDE
+// presets/image/patch-reshuffle: where a texel is not known yet, the guide (the marked segment
+// scaled up) stands in for it with the weight params.guide_weight (alpha > 0 where it exists),
+// so the fill follows the enlarged structure with the picture's own texels.
+uniform sampler2D guide;
+#endif
 
 int g_layer;
 
@@ -23,12 +29,18 @@ int a8_at(ivec2 p) {
 }
 bool known_at(ivec2 p) { int a = a8_at(p); return a >= 1 && a <= g_layer; }
 
-// One load: the alpha and the colour of the same texel come from the same read.
+// One load: the alpha and the colour of the same texel come from the same read. The alpha
+// returned is the texel's weight in d (image/efros_leung.glsl): 1 known, 0 unknown.
 vec4 el_canvas(ivec2 p) {
     if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, imageSize(canvas)))) return vec4(0.0);
     vec4 c = imageLoad(canvas, p);
     int a = int(round(c.a * 255.0));
-    return (a >= 1 && a <= g_layer) ? vec4(c.rgb, 1.0) : vec4(0.0);
+    if (a >= 1 && a <= g_layer) return vec4(c.rgb, 1.0);
+#ifdef GUIDE
+    vec4 gd = texelFetch(guide, p, 0);
+    if (gd.a > 0.0) return vec4(gd.rgb, params.guide_weight);
+#endif
+    return vec4(0.0);
 }
 bool el_valid(ivec2 q) { return texelFetch(valid, q, 0).r > 0.0; }
 

@@ -14,6 +14,12 @@ layout(local_size_x = 8, local_size_y = 8) in;
 uniform sampler2D known;
 uniform sampler2D valid;
 layout(rgba8) uniform image2D canvas;
+#ifdef GUIDE
+// presets/image/patch-reshuffle: where a texel is not known yet, the guide (the marked segment
+// scaled up) stands in for it with the weight params.guide_weight (alpha > 0 where it exists),
+// so the fill follows the enlarged structure with the picture's own texels.
+uniform sampler2D guide;
+#endif
 
 int g_layer;
 
@@ -23,27 +29,32 @@ int a8_at(ivec2 p) {
 }
 bool known_at(ivec2 p) { int a = a8_at(p); return a >= 1 && a <= g_layer; }
 
-// One load: the alpha and the colour of the same texel come from the same read.
+// One load: the alpha and the colour of the same texel come from the same read. The alpha
+// returned is the texel's weight in d (image/efros_leung.glsl): 1 known, 0 unknown.
 vec4 el_canvas(ivec2 p) {
     if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, imageSize(canvas)))) return vec4(0.0);
     vec4 c = imageLoad(canvas, p);
     int a = int(round(c.a * 255.0));
-    return (a >= 1 && a <= g_layer) ? vec4(c.rgb, 1.0) : vec4(0.0);
+    if (a >= 1 && a <= g_layer) return vec4(c.rgb, 1.0);
+#ifdef GUIDE
+    vec4 gd = texelFetch(guide, p, 0);
+    if (gd.a > 0.0) return vec4(gd.rgb, params.guide_weight);
+#endif
+    return vec4(0.0);
 }
 bool el_valid(ivec2 q) {
-    // TODO 2 (003_cfc3b5b225ddab3d.txt L65-79): q may be a candidate centre only if its whole
-    // N x N window is known picture: inside the image and outside the hole. The bake pass
-    // `valid` stores exactly that (r = 1) in the image `valid`: read it with texelFetch.
-    return false;
+    int h = params.half_window;   // the window inside the image: enough, surely
+    return all(greaterThanEqual(q, ivec2(h))) && all(lessThan(q, imageSize(canvas) - h));
 }
 
 #include "image/efros_leung.glsl"
 
 // The front of layer L: unknown, with at least one of its 8 neighbours known before L.
 bool in_front(ivec2 p) {
-    // TODO 1 (onion peel, L65-79): p is in the front of layer g_layer when it is still unknown
-    // (a8_at(p) == 0) and at least one of its 8 neighbours is known before this layer
-    // (known_at). Everything else is left alone: known texels are never rewritten.
+    if (a8_at(p) != 0) return false;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+            if ((dx != 0 || dy != 0) && known_at(p + ivec2(dx, dy))) return true;
     return false;
 }
 
