@@ -6,8 +6,9 @@
 // A texel's alpha is the layer that filled it plus one (a8 = 1 for the known picture, 0 for
 // unknown): layer L sees as known exactly 1 <= a8 <= L, and a texel filled by another thread of
 // the same layer (a8 = L + 1) never counts, whatever the timing. A layer may be cut into `parts`
-// columns classes done in successive steps (the live view: one part a frame); as a layer never
-// reads itself, the result does not depend on the split.
+// classes, (x + 5 y) % parts (diagonal, so a straight border spreads over every class), done in
+// successive steps (the live view: one a frame). A layer never reads itself, and every split
+// keeps the invariants, but the pictures differ (presets/image/image-completion/README.md).
 // Step g = frame.accum_frame * pl_iteration_count + pl_iteration is part g % parts of layer
 // g / parts + 1.
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -60,7 +61,7 @@ void main() {
     if (any(greaterThanEqual(p, imageSize(canvas)))) return;
     int g = frame.accum_frame * pl_iteration_count + pl_iteration;
     g_layer = g / params.parts + 1;
-    if (p.x % params.parts != g % params.parts || !in_front(p)) return;
+    if ((p.x + 5 * p.y) % params.parts != g % params.parts || !in_front(p)) return;
     el_gather(p, params.half_window);
     ivec2 q = el_choose(known, params.epsilon, uvec3(p, uint(params.seed) * 65537u));
     imageStore(canvas, p, vec4(texelFetch(known, q, 0).rgb, float(g_layer + 1) / 255.0));
