@@ -6,7 +6,7 @@
 //   radiance = rho/pi * E_direct * V + rho * E_indirect / pi
 // Targets: `radiance` (linear, direct + indirect: what gi_compare.sh compares), `indirect`
 // (E_indirect / pi, before the albedo: the uniform-field cases), `radiance_first` (the same
-// from the first-bounce grid alone: the bounces = 1 case), `coverage`.
+// from the first-bounce grid alone, with params.verify: the bounces = 1 case), `coverage`.
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;
 layout(location = 2) flat in vec3 v_albedo;
@@ -49,9 +49,9 @@ void main() {
     vec3 rho = v_albedo;
     vec3 direct = params.direct ? rho / SH_PI * cornell_light_irradiance(v_world, n) * visibility(v_world, n) : vec3(0.0);
     vec3 e = indirect_over_pi(rh, v_world, n);
-    vec3 e1 = indirect_over_pi(rh_first, v_world, n);
     radiance = vec4(direct + rho * e, 1.0);
     indirect = vec4(e, 1.0);
-    radiance_first = vec4(direct + rho * e1, 1.0);
+    radiance_first = vec4(0.0);
+    if (params.verify) radiance_first = vec4(direct + rho * indirect_over_pi(rh_first, v_world, n), 1.0);
     coverage = vec4(1.0);
 }
