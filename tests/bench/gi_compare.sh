@@ -17,7 +17,7 @@
 #   PASSLAB   the passlab binary (default build/default/lab/passlab)
 #   --write   replace the table between the markers in presets/gi/README.md (else: stdout)
 # Environment: GI_REF (default presets/gi/path-tracing-reference) the reference preset,
-#   GI_REF_FRAMES (default 256) its frames, GI_SIZE (default 320x180), GI_BENCH_FRAMES (default 30).
+#   GI_REF_FRAMES (default 256) its frames, GI_REF_SET (default "interleave=1 spp=4") its params, GI_SIZE (default 320x180), GI_BENCH_FRAMES (default 30).
 # Run from the repository root. Not a ctest: the reference takes minutes on llvmpipe.
 set -eu
 passlab=${1:-build/default/lab/passlab}
@@ -32,6 +32,9 @@ passlab, write = sys.argv[1], sys.argv[2] == "--write"
 METHODS = ["instant-radiosity", "reflective-shadow-maps", "radiance-hints"]
 ref = os.environ.get("GI_REF", "presets/gi/path-tracing-reference")
 ref_frames = int(os.environ.get("GI_REF_FRAMES", "256"))
+# The reference's params: every pixel traced every frame (interleave 1) at 4 paths a frame, so
+# frames x 4 = paths per pixel (the live default traces one pixel in 64 per frame).
+ref_sets = os.environ.get("GI_REF_SET", "interleave=1 spp=4").split()
 size = os.environ.get("GI_SIZE", "320x180")
 bench_frames = os.environ.get("GI_BENCH_FRAMES", "30")
 tmp = tempfile.mkdtemp(prefix="gi-compare-")
@@ -45,10 +48,12 @@ def run(args):
 def images_of(preset):
     return {i["name"] for i in json.loads(run(["check", preset, "--json", "-"]))["images"]}
 
-def render(preset, images, frames=1, tag=""):
+def render(preset, images, frames=1, tag="", sets=()):
     """{image: (w, h, pixels)} of `images` rendered at `size`."""
     out = os.path.join(tmp, os.path.basename(preset.rstrip("/")) + tag)
-    args = ["render", preset, "-o", out, "--size", size, "--frames", str(frames), "--format", "exr"]
+    args = ["render", preset, "-o", out, "--size", size, "--frames", str(frames), "--format", "exr", "--timeout", "900"]
+    for a in sets:
+        args += ["--set", a]
     for im in images:
         args += ["--pass", im]
     files = run(args).split()
@@ -76,8 +81,8 @@ if not os.path.isdir(ref):
 ref_images = images_of(ref)
 want = ["radiance"] + (["indirect"] if "indirect" in ref_images else [])
 print(f"reference {ref}: {ref_frames} frames at {size} ...", file=sys.stderr)
-R = render(ref, want, ref_frames)
-R_half = render(ref, ["radiance"], ref_frames // 2, "-half")
+R = render(ref, want, ref_frames, sets=ref_sets)
+R_half = render(ref, ["radiance"], ref_frames // 2, "-half", sets=ref_sets)
 noise = rmse(R["radiance"], R_half["radiance"])
 
 rows, device = [], ""
