@@ -72,8 +72,8 @@ vec3 cornell_light_intensity(vec3 w) {
     return CORNELL_LIGHT_I * smoothstep(CORNELL_CONE_OUTER, CORNELL_CONE_INNER, dot(w, CORNELL_LIGHT_DIR));
 }
 
-// Direct irradiance-times-BRDF from the spot at point p with normal n, visibility excluded:
-// L_direct = (rho/pi) I(w) max(0, n.l) / d^2 (the caller multiplies by rho/pi and visibility).
+// Direct irradiance from the spot at point p with normal n, visibility excluded:
+// E = I(w) max(0, n.l) / d^2; the caller multiplies by rho/pi and the visibility for L_direct.
 vec3 cornell_light_irradiance(vec3 p, vec3 n) {
     vec3 d = CORNELL_LIGHT_POS - p;
     float d2 = dot(d, d);
