@@ -140,13 +140,6 @@ struct Tally {
     }
 };
 
-bool is_shader(const fs::path& p) {
-    static const char* const kExt[] = {".frag", ".vert", ".comp", ".geom", ".tesc", ".tese", ".glsl"};
-    for (const char* e : kExt)
-        if (p.extension() == e) return true;
-    return false;
-}
-
 // A child's failure images go to the scratch folder, never to ./test-failures.
 std::vector<std::string> test_args(const fs::path& toml, const CommonOptions& c, const fs::path& scratch) {
     std::vector<std::string> a{"test", toml.parent_path().string(), "--timeout", std::to_string(c.timeout_s),
@@ -201,7 +194,7 @@ int mutate(const MutateOptions& o, const CommonOptions& c) {
         std::vector<Source> sources;
         const fs::path lib = exec::passes_dir();
         for (const auto& dep : built->dependencies) {
-            if (!is_shader(dep)) continue;
+            if (!is_shader_file(dep)) continue;
             Source s;
             s.path = dep;
             if (auto in_preset = path_within(dep, dir)) s.rel = *in_preset, s.display = s.rel.string();

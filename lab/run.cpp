@@ -85,8 +85,7 @@ int apply_sidecar(LabState& s, exec::Executor& ex, const fs::path& file, const s
     int applied = 0;
     for (const auto& a : *sets) {
         std::string name = a.substr(0, a.find('='));
-        bool on_cli = std::any_of(cli_sets.begin(), cli_sets.end(), [&](const std::string& c) { return c.rfind(name + "=", 0) == 0; });
-        if (on_cli) continue;
+        if (exec::assigns(cli_sets, name)) continue;
         if (auto st = exec::apply_param_override(ex.params(), a); !st) {
             std::fprintf(stderr, "passlab: %s: ignoring '%s': %s\n", file.string().c_str(), a.c_str(), st.error().message.c_str());
             continue;

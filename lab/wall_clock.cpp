@@ -1,6 +1,6 @@
 #include "wall_clock.hpp"
 
-#include <algorithm>
+#include "exec/params.hpp"
 
 namespace pl::lab {
 
@@ -10,8 +10,7 @@ int apply_wall_clock(std::vector<graph::ParamDesc>& params, const std::vector<st
     int n = 0;
     for (auto& p : params) {
         if (p.clock.empty()) continue;
-        const bool on_cli = std::any_of(cli_sets.begin(), cli_sets.end(), [&](const std::string& c) { return c.rfind(p.name + "=", 0) == 0; });
-        if (on_cli) continue;  // the user pinned it
+        if (exec::assigns(cli_sets, p.name)) continue;  // the user pinned it
         const double month = t.tm_mon + (p.clock == "date-month1" ? 1 : 0);
         p.value = {1900.0 + t.tm_year, month, double(t.tm_mday), t.tm_hour * 3600.0 + t.tm_min * 60.0 + t.tm_sec};
         ++n;

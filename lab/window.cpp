@@ -272,7 +272,7 @@ WindowInput Window::take_input() {
     WindowInput out = input_;
     input_.drag_dx = input_.drag_dy = input_.scroll = 0;
     input_.pause_toggled = input_.step = input_.screenshot = input_.toggle_ui = input_.toggle_help = false;
-    for (int k = 0; k < 256; ++k) input_.keys.set(exec::KeyboardState::pressed, k, false);  // one frame sees a press
+    input_.keys.clear(exec::KeyboardState::pressed);  // one frame sees a press
     return out;
 }
 

@@ -16,6 +16,8 @@ PACKAGES=(
   graphviz
   python3
 )
+# `deps.sh --fuzz`: also clang and its libFuzzer/sanitizer runtime, for tests/fuzz/campaign.sh.
+if [ "${1:-}" = "--fuzz" ]; then PACKAGES+=(clang libclang-rt-14-dev); fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -37,8 +37,7 @@ Result<fs::path> resolve_preset(const std::string& arg) {
     }
     if (fs::is_regular_file(p, ec)) {
         // A shader where a preset is expected would otherwise be reported as invalid TOML.
-        static const std::vector<std::string> shader_ext = {".frag", ".glsl", ".vert", ".comp", ".geom", ".tesc", ".tese", ".fs", ".vs"};
-        if (std::find(shader_ext.begin(), shader_ext.end(), p.extension().string()) != shader_ext.end()) {
+        if (is_shader_file(p)) {
             Error e = make_error("'" + arg + "' looks like a shader file; a preset is a folder with preset.toml (to run a Shadertoy shader use passlab import)");
             e.code = ExitCode::usage;
             if (fs::exists(p.parent_path() / "preset.toml", ec))

@@ -22,6 +22,10 @@ struct KeyboardState {
         const uint32_t m = 1u << (key % 32);
         w = on ? (w | m) : (w & ~m);
     }
+    // Every key of row r off (the "pressed" row lasts one frame).
+    void clear(Row r) {
+        for (std::size_t i = 0; i < 8; ++i) bits[static_cast<std::size_t>(r) * 8 + i] = 0;
+    }
     bool get(Row r, int key) const {
         return key >= 0 && key <= 255 && (bits[static_cast<std::size_t>(r * 8 + key / 32)] >> (key % 32)) & 1u;
     }

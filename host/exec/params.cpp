@@ -193,4 +193,10 @@ Status apply_param_override(std::vector<ParamDesc>& params, const std::string& a
     return apply_param_value(params, name, value, loc);
 }
 
+bool assigns(const std::vector<std::string>& assignments, const std::string& name) {
+    for (const auto& a : assignments)
+        if (a.size() > name.size() && a.compare(0, name.size(), name) == 0 && a[name.size()] == '=') return true;
+    return false;
+}
+
 } // namespace pl::exec

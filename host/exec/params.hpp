@@ -33,6 +33,9 @@ std::vector<uint8_t> pack_params(const std::vector<graph::ParamDesc>& params, co
 // Applies "name=value" (value: number, comma-separated vector, true/false, enum option name) to
 // `params`. Errors name the param and list valid ones / the valid options.
 Status apply_param_override(std::vector<graph::ParamDesc>& params, const std::string& assignment);
+// Whether one of the "name=value" assignments (`--set` on the command line) sets `name`: what
+// the user pinned there wins over saved values and the wall clock.
+bool assigns(const std::vector<std::string>& assignments, const std::string& name);
 Status apply_param_value(std::vector<graph::ParamDesc>& params, const std::string& name,
                          const graph::Value& value, const SourceLoc& loc);
 

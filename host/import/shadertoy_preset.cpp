@@ -145,10 +145,11 @@ struct Builder {
             img_text += "pl_keyboard = { format = \"r8\", size = [256, 3], sampler = { filter = \"nearest\", address = \"clamp\" } }\n";
             out.files["pl_keyboard.frag"] = keyboard_shader();
         }
-        std::string sky_text;
+        // Passes that fill inputs before the tabs run: the cube faces of sky channels, the keyboard.
+        std::string input_passes;
         if (!sky_passes.empty()) out.files["pl_sky_cube.frag"] = sky_cube_shader();
         for (const auto& s : sky_passes)
-            sky_text += "\n[[pass]]\nname     = \"" + s + "_sky\"\nfragment = \"pl_sky_cube.frag\"\nbake     = true\nrepeat   = 6\n"
+            input_passes += "\n[[pass]]\nname     = \"" + s + "_sky\"\nfragment = \"pl_sky_cube.frag\"\nbake     = true\nrepeat   = 6\n"
                         "targets  = [{ image = \"" + s + "\", layer = \"iteration\" }]\n";
 
         std::string t = "# Imported by `passlab import` from " + toy.source + " (docs/import.md).\n";
@@ -168,8 +169,8 @@ struct Builder {
         t += "\n[params]\ndate = { value = [2026.0, 0.0, 1.0, 43200.0], clock = \"date\", doc = \"iDate: year, month (0-11), day, seconds (iTime is added); run: the wall clock\" }\n";
         t += "\n[images]\n" + img_text + images;
         if (keyboard)
-            sky_text += "\n[[pass]]\nname     = \"pl_keyboard\"\nfragment = \"pl_keyboard.frag\"\ntargets  = [\"pl_keyboard\"]\n";
-        t += sky_text + pass_text;
+            input_passes += "\n[[pass]]\nname     = \"pl_keyboard\"\nfragment = \"pl_keyboard.frag\"\ntargets  = [\"pl_keyboard\"]\n";
+        t += input_passes + pass_text;
         t += "\n[output]\nimage = \"image\"\n";
         if (opt.golden)
             t += "\n[[test]]\nname   = \"golden\"\nsize   = [320, 180]\ntime   = 1.0\nframes = 30\nstep   = 0.0333333\n"

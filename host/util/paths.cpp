@@ -18,4 +18,12 @@ fs::path canonical_or_normal(const fs::path& p) {
     return (ec ? p : a).lexically_normal();
 }
 
+bool is_shader_file(const std::filesystem::path& p) {
+    static const char* const kExt[] = {".frag", ".vert", ".comp", ".geom", ".tesc", ".tese", ".glsl", ".fs", ".vs"};
+    const auto ext = p.extension();
+    for (const char* e : kExt)
+        if (ext == e) return true;
+    return false;
+}
+
 } // namespace pl

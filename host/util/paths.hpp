@@ -14,4 +14,9 @@ std::optional<std::filesystem::path> path_within(const std::filesystem::path& p,
 // the lexically normal absolute path, so identity checks still work and nothing aborts.
 std::filesystem::path canonical_or_normal(const std::filesystem::path& p);
 
+// A GLSL source by its extension: the stage suffixes, .glsl includes and ISF's .fs/.vs. Used
+// where a shader given as a preset gets a pointed message, and by `mutate` to pick the files
+// it may change.
+bool is_shader_file(const std::filesystem::path& p);
+
 } // namespace pl

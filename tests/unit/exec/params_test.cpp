@@ -72,3 +72,13 @@ TEST(Params, EnumByName) {
     EXPECT_NE(params_glsl(ps).find("#define MODEL_BLINN 1"), std::string::npos);
     EXPECT_FALSE(apply_param_override(ps, "model=phon"));
 }
+
+// `--set` pins a param against the sidecar and the wall clock only when it names exactly that
+// param: "gain" is not set by "gaink=2", nor by a bare "gain".
+TEST(Params, AssignsMatchesWholeNames) {
+    EXPECT_TRUE(assigns({"octaves=3", "gain=0.5"}, "gain"));
+    EXPECT_TRUE(assigns({"gain="}, "gain"));
+    EXPECT_FALSE(assigns({"gaink=2"}, "gain"));
+    EXPECT_FALSE(assigns({"gain"}, "gain"));
+    EXPECT_FALSE(assigns({}, "gain"));
+}
