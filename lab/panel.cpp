@@ -1,5 +1,7 @@
 #include "panel.hpp"
 
+#include "command_line.hpp"
+
 #include "exec/param_sidecar.hpp"
 
 #include <imgui.h>
@@ -82,7 +84,7 @@ void params_section(LabState& s, exec::Executor& ex, const std::string& preset) 
     for (auto& p : params)
         if (param_widget(p)) s.touched[p.name] = p.value;
     if (ImGui::Button("Copy as --set")) {
-        s.copy_line = "passlab render " + preset + set_arguments(ex, s);
+        s.copy_line = render_command(self_executable(), preset, set_arguments(ex, s));
         ImGui::SetClipboardText(s.copy_line.c_str());
         s.status = "copied: " + s.copy_line;
     }
@@ -218,11 +220,11 @@ void help_window(LabState& s) {
 
 } // namespace
 
-std::string set_arguments(const exec::Executor& ex, const LabState& s) {
-    std::string out;
+std::vector<std::string> set_arguments(const exec::Executor& ex, const LabState& s) {
+    std::vector<std::string> out;
     for (const auto& p : ex.graph().desc.params) {
         auto it = s.touched.find(p.name);
-        if (it != s.touched.end()) out += " --set " + p.name + "=" + exec::format_param_value(p, it->second);
+        if (it != s.touched.end()) out.push_back(p.name + "=" + exec::format_param_value(p, it->second));
     }
     return out;
 }

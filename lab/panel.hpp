@@ -39,13 +39,14 @@ struct LabState {
     std::string status;     // one-line feedback ("saved to ...")
 };
 
-// `viewer` may be null (no texture yet). `preset` names the preset in the copy-as-command line.
+// `viewer` may be null (no texture yet). `preset` is the preset folder (absolute) that the
+// copy-as-command line renders.
 void draw_panel(LabState& s, exec::Executor& ex, const ViewerTexture* viewer, const std::string& preset);
 
 // The named cameras' values and frustums, and frame.accum_frame (panel_cameras.cpp).
 void cameras_section(const exec::Executor& ex);
 
 // The `--set` arguments reproducing the current values of the touched params.
-std::string set_arguments(const exec::Executor& ex, const LabState& s);
+std::vector<std::string> set_arguments(const exec::Executor& ex, const LabState& s);
 
 } // namespace pl::lab

@@ -359,7 +359,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
         }
 
         (*overlay)->begin_frame();
-        draw_panel(st, *current, viewer.get(), preset_name);
+        draw_panel(st, *current, viewer.get(), fs::absolute(toml.parent_path()).lexically_normal().string());
         (*overlay)->end_frame();
         if (st.save_sidecar) {
             auto s = exec::save_sidecar(sidecar, current->params(), st.touched);

@@ -54,8 +54,10 @@ Result<Channel> read_channel(const toml::node& n, const std::string& file, const
     static const std::pair<const char*, ChannelKind> media[] = {
         {"texture", ChannelKind::texture}, {"cubemap", ChannelKind::cubemap}, {"volume", ChannelKind::volume},
         {"video", ChannelKind::video},     {"webcam", ChannelKind::webcam},   {"audio", ChannelKind::audio}};
-    for (const auto& [key, val] : *t) {
-        const std::string k(key.str());
+    for (const auto& entry : *t) {
+        // Not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+        const std::string k(entry.first.str());
+        const toml::node& val = entry.second;
         auto text = [&]() -> Result<std::string> {
             if (auto s = val.as_string()) return s->get();
             return at("'" + k + "' must be a string", val, file);
