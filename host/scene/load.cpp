@@ -94,15 +94,18 @@ Result<Mesh> load_obj(const fs::path& file) {
                     m.indices.push_back(it->second);
                     continue;
                 }
-                if (idx.vertex_index < 0 || size_t(3 * idx.vertex_index + 2) >= attrib.vertices.size())
+                // Offsets in size_t: an index near INT_MAX (a face "f 5555555555") would overflow
+                // 3 * index in int, which is undefined (found by tests/fuzz, fuzz_mesh).
+                const size_t vi = size_t(idx.vertex_index), ni = size_t(idx.normal_index), ti = size_t(idx.texcoord_index);
+                if (idx.vertex_index < 0 || 3 * vi + 2 >= attrib.vertices.size())
                     return make_error("mesh '" + file.string() + "': a face refers to a vertex that does not exist");
                 Vertex v{};
-                for (int k = 0; k < 3; ++k) v.position[k] = attrib.vertices[3 * idx.vertex_index + k];
-                if (idx.normal_index >= 0 && size_t(3 * idx.normal_index + 2) < attrib.normals.size())
-                    for (int k = 0; k < 3; ++k) v.normal[k] = attrib.normals[3 * idx.normal_index + k];
-                if (idx.texcoord_index >= 0 && size_t(2 * idx.texcoord_index + 1) < attrib.texcoords.size()) {
-                    v.uv[0] = attrib.texcoords[2 * idx.texcoord_index];
-                    v.uv[1] = 1.0f - attrib.texcoords[2 * idx.texcoord_index + 1];  // OBJ v is bottom-up
+                for (size_t k = 0; k < 3; ++k) v.position[k] = attrib.vertices[3 * vi + k];
+                if (idx.normal_index >= 0 && 3 * ni + 2 < attrib.normals.size())
+                    for (size_t k = 0; k < 3; ++k) v.normal[k] = attrib.normals[3 * ni + k];
+                if (idx.texcoord_index >= 0 && 2 * ti + 1 < attrib.texcoords.size()) {
+                    v.uv[0] = attrib.texcoords[2 * ti];
+                    v.uv[1] = 1.0f - attrib.texcoords[2 * ti + 1];  // OBJ v is bottom-up
                 }
                 uint32_t slot = static_cast<uint32_t>(m.vertices.size());
                 m.vertices.push_back(v);
