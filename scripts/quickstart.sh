@@ -24,4 +24,16 @@ if [ "$mode" = render ]; then
 else
   # Every test runs under the Khronos validation layer; any validation message fails it.
   ctest --test-dir "$build_dir" -j 2 --output-on-failure --timeout 600
+  # The sanitizer stage: the unit tests and the fuzz replays (seeds and every input that once
+  # crashed, tests/fuzz/found) again under AddressSanitizer + UBSan, in build/asan; any report
+  # fails. PASSLAB_SKIP_SANITIZERS=1 skips it on a machine in a hurry (CI never sets it).
+  if [ "${PASSLAB_SKIP_SANITIZERS:-0}" != 1 ]; then
+    echo "sanitizer stage: unit tests and fuzz replays under ASan + UBSan (build/asan) ..."
+    cmake --preset asan -G Ninja >/dev/null
+    cmake --build build/asan -j "$(nproc)" --target \
+      test_util test_graph test_shader test_scene test_image test_exec test_check test_mutate test_import test_lab \
+      fuzz_preset fuzz_glsl fuzz_import fuzz_mesh
+    ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+      ctest --test-dir build/asan -j 2 -L 'unit|fuzz' --output-on-failure --timeout 900
+  fi
 fi
