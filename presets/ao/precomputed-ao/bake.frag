@@ -11,7 +11,7 @@
 // The bent normal (000 L4865) is the mean of the unblocked directions, normalised.
 // The n = rays x rays directions are a stratified grid (passes/common/sampling.glsl), turned
 // about the normal by a per-texel hashed angle so neighbouring texels do not band alike.
-#include "scene.glsl"
+#include "ao/scene.glsl"
 #include "common/sampling.glsl"
 #include "common/hash.glsl"
 layout(location = 0) out vec4 ao_map;  // r: V_AO, gba: bent normal (world)

@@ -1,7 +1,7 @@
 #version 450
 // Draws patch gl_InstanceIndex of scene.glsl: a plane mesh's (u, v) moved onto the surface the
 // bake sampled. Absent patches (not in the chosen scene) are sent outside the clip volume.
-#include "scene.glsl"
+#include "ao/scene.glsl"
 layout(location = 2) in vec2 uv;
 layout(location = 0) out vec3 v_world;
 layout(location = 1) out vec3 v_normal;

@@ -4,7 +4,7 @@
 // as printed, the direct term is darkened too (apply = all); apply = ambient darkens only the
 // ambient term, which is what the occlusion actually measures (004 L690: constant light from
 // every direction).
-#include "scene.glsl"
+#include "ao/scene.glsl"
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;
 layout(location = 2) in vec2 v_atlas;

@@ -2,7 +2,7 @@
 """Writes scene.obj: presets/ao/precomputed-ao's mesh as one triangle mesh for the host BVH.
 
 precomputed-ao draws a 48 x 48-segment plane grid once per patch and moves every vertex onto its
-patch in the vertex shader (its scene.glsl, surface_point). A host-built BVH needs the triangles
+patch in the vertex shader (passes/ao/scene.glsl, surface_point). A host-built BVH needs the triangles
 on the host, so this script applies the same map to the same grid (the plane generator's vertex
 order and triangles, host/scene/generators.cpp) and writes the 11 patches of scene "objects".
 vt = (patch id, 0): the shading's albedo. Vertices keep the analytic normals.

@@ -1,7 +1,7 @@
 #version 450
 // Test-only: presets/ao/precomputed-ao's visibility at the same points, computed by its own
-// scene (scene.glsl: the analytic solids of scene "objects") with the bake's 1024 feelers:
-// the same cosine grid, the same per-point turn (bake.frag's hashed angle), the
+// scene (passes/ao/scene.glsl: the analytic solids of scene "objects") with the bake's 1024
+// feelers: the same cosine grid, the same per-point turn (bake.frag's hashed angle), the
 // same normal offset and feeler length. No BVH, no triangles: what the rays must reproduce.
 layout(local_size_x = 8, local_size_y = 8) in;
 // precomputed-ao's scene.glsl reads its `scene` param; here it is always "objects", the scene
@@ -14,7 +14,7 @@ const PrecomputedAoParams kObjects = PrecomputedAoParams(0);
 #define SCENE_BOWL 3
 #define SCENE_CREASE 4
 #define params kObjects
-#include "../../ao/precomputed-ao/scene.glsl"
+#include "ao/scene.glsl"
 #undef params
 #include "raytrace/rtao.glsl"
 uniform sampler2D g_position;

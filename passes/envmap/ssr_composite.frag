@@ -1,4 +1,5 @@
 #version 450
+// envmap/ssr's composite, shared with raytrace/rt-reflections-hybrid's test-only ssr_composite.
 // c = mix(lit, reflection, map): the reflection map decides per pixel (000 L3990-3993). Where
 // the ray missed, the environment in direction R stands in (000 L4124: "blend with
 // cubemaps"), or nothing (fallback off). Where the map is 0 the lit image passes untouched.

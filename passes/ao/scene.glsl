@@ -1,3 +1,5 @@
+// presets/ao/precomputed-ao's scene, shared with raytrace/rt-ambient-occlusion's reference
+// (which has no `scene` param: it stands in a constant params.scene and the SCENE_* defines).
 // The baked scene: every surface is a parametric patch (u, v) in [0, 1]^2 -> point and normal,
 // and the same function serves the bake (one AO texel per (u, v), like a light map, 004 L697)
 // and the draw (a plane mesh whose vertices are moved onto the patch), so texel and surface

@@ -1,4 +1,5 @@
 #version 450
+// envmap/ssr's pass, shared with raytrace/rt-reflections-hybrid (SSR first, rays at its gaps).
 // Screen-space reflections (000_c9f7e5de708ecbb3.txt L3968-4130, after Killing Floor 2 as the
 // lecture cites it). For every pixel with a non-zero reflection map:
 //   1. P from the depth buffer, V = normalize(P - eye), R = reflect(V, N)         (L3999)
