@@ -1,12 +1,15 @@
 #version 450
 // day_night: a room lit through a window whose light switches between bright day (x8) and a
 // dim lamp every 4 seconds, so the adaptation is visible in `passlab run`. gradient: luminance
-// u (the mean test). step: a flat 1 until t = 0, then 4 (the adaptation test).
+// u (the mean test). step: a flat 1 until t = 0, then 4 (the adaptation test). quadratic:
+// luminance u^2 (a mean test whose mean, 1/3, differs from the value at the centre, 1/4).
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 hdr;
 void main() {
     if (params.scene == SCENE_GRADIENT) {
         hdr = vec4(vec3(uv.x), 1.0);
+    } else if (params.scene == SCENE_QUADRATIC) {
+        hdr = vec4(vec3(uv.x * uv.x), 1.0);
     } else if (params.scene == SCENE_STEP) {
         hdr = vec4(vec3(frame.time < 1e-3 ? 1.0 : 4.0), 1.0);  // 1e-3: the test clock lands on 0 only to rounding
     } else {
