@@ -13,7 +13,9 @@
 // Position within its brick, in [0, 1)^2, with the odd rows shifted (L226-232).
 vec2 brick_rel_pos(vec2 position_model, vec2 brick_step) {
     vec2 rel_pos = position_model / brick_step;
-    // "this saves conversion to int / mod" (L229): abs() keeps negative rows alternating too.
+    // "this saves conversion to int / mod" (L229). The notes' abs() mirrors the rows at y = 0:
+    // rows -1 and 0 are both unshifted (GLSL's mod is floored, so without abs they would
+    // alternate); kept as the notes write it, the goldens of brick and brick-noisy record it.
     if (mod(abs(rel_pos.y), 2.0) > 1.0) rel_pos.x += 0.5;
     return fract(rel_pos);
 }
