@@ -39,7 +39,7 @@ void main() {
     //   - diffuse: the colour the Lambert term scatters. Metals have no diffuse light.
     //   - f0, the Fresnel reflectance at normal incidence: 0.08 x params.specular (about 4 % for
     //     a dielectric) at metallic 0, the base colour itself at metallic 1, blended between.
-    vec3 diffuse = params.base_color;
+    vec3 diffuse = vec3(0.0);
     vec3 f0 = vec3(0.0);
 
     float V = params.visibility == VISIBILITY_SMITH_GGX ? v_smith_ggx(nv, nl, r) : v_schlick_ggx(nv, nl, r);
