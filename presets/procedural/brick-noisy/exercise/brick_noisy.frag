@@ -23,7 +23,7 @@ void main() {
     vec2 rel_pos = brick_rel_pos(a_position_model.xy, params.brick_size);  // brick_size min 0.01
     plain_out = brick_is_mortar(rel_pos, params.brick_percent) ? 1.0 : 0.0;
 
-    // TODO 1: curvy brick edges (L453, L464-481): shift the position within the brick by
+    // TODO 1: curvy brick edges (L453, L464-487): shift the position within the brick by
     // border_amp times a 2D noise of the model-space position at border_freq cycles per unit,
     //     rel_pos += border_amp * noise2(border_freq * P_model).
     // Where in the brick steps does the shift belong (L453 says "after fract()"), and in which
