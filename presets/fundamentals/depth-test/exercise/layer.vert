@@ -19,9 +19,10 @@ void main() {
     // Layers step down-right as they get farther, so each shows a strip of itself.
     vec2 lo = params.full ? vec2(-1.0) : vec2(-0.85) + vec2(0.09) * float(rank);
     vec2 hi = params.full ? vec2(1.0) : lo + vec2(1.0, 1.0);
-    // TODO 2: the layer's depth z in NDC (Vulkan: [0, 1]), from its rank: evenly spaced in
-    // [0.1, 0.9), z = 0.1 + 0.8 rank / n. The depth test is "less" with the buffer cleared to
-    // 1 (000 L177-185): which end of the range is near the eye, and so which rank gets it?
+    // TODO 2: the layer's depth z in NDC (Vulkan: [0, 1]), from its rank: the n layers evenly
+    // spaced in [0.1, 0.9), 0.8 / n apart, rank 0 at one end (z = 0.1) or the other. The depth
+    // test is "less" with the buffer cleared to 1 (000 L177-185): which end of the range is
+    // near the eye, and so which rank gets z = 0.1?
     float z = 0.5;
     v_rank = rank;
     gl_Position = vec4(mix(lo, hi, c), z, 1.0);
