@@ -11,7 +11,7 @@ uniform sampler2D result;
 void main() {
     // zoom > 1 magnifies the centre (nearest: texels stay squares), e.g. the point scene's kernel.
     ivec2 t = ivec2(floor((0.5 + (uv - 0.5) / params.zoom) * frame.resolution.xy));
-    ivec2 tb = params.resolution == RESOLUTION_HALF ? t / 2 : t;  // blurred is view/2 at half resolution
+    ivec2 tb = params.resolution == RESOLUTION_HALF ? min(t / 2, textureSize(blurred, 0) - 1) : t;  // blurred is view/2 at half resolution (odd sizes: clamp)
     vec3 c = params.show == SHOW_BLUR ? texelFetch(blurred, tb, 0).rgb : texelFetch(result, t, 0).rgb;
     if (params.show == SHOW_SHARP || (params.split && uv.x < 0.5)) c = texelFetch(src, t, 0).rgb;
     // The point scene's texel holds w x h: scale so a hexagon of circumradius R = point_coc
