@@ -5,6 +5,10 @@
 // blurry background" — is handled by its solution, depth-aware filtering: a neighbour behind
 // this pixel may contribute only as far as this pixel's own circle reaches, so a blurred
 // background does not smear over an in-focus object in front of it, nor the reverse.
+// HALF_RES (the live default, `resolution = half`; not the document's, for a live frame rate on
+// a CPU rasteriser): the same gather for one pixel of each 2x2 block (its top-left texel; the
+// taps still read the full-resolution colour, CoC and depth and the radii stay in full-res
+// pixels), into a view/2 target; display.frag composites it with the sharp input.
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 result;
 uniform sampler2D color;
@@ -12,8 +16,13 @@ uniform sampler2D coc;
 uniform sampler2D depth;
 const float kMaxRadius = 24.0;  // pixels
 void main() {
+#ifdef HALF_RES
+    ivec2 px = 2 * ivec2(gl_FragCoord.xy), last = textureSize(color, 0) - 1;
+    float h = float(textureSize(color, 0).y);  // full-res pixels per image height
+#else
     ivec2 px = ivec2(gl_FragCoord.xy), last = textureSize(color, 0) - 1;
     float h = frame.resolution.y;
+#endif
     float r_here = min(abs(texelFetch(coc, px, 0).x) * h, kMaxRadius);
     float d_here = texelFetch(depth, px, 0).r;
     vec3 sum = texelFetch(color, px, 0).rgb;

@@ -4,6 +4,8 @@
 // red, green and blue are fetched fringe = 0.7 pixels apart along the three hexagon directions
 // (chromatic aberration of the bokeh's rim). The printed uTexSourceA is read here as the sharp
 // source: where the factor is 0 the output is A, which must be the in-focus image.
+// resolution = half (not 002's): `blurred` is view/2; it is read bilinearly at this pixel's uv
+// (the upsample), and the fringe offsets stay in view pixels (the sharp source's texel size).
 #include "hex_gather.glsl"
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 result;
@@ -11,9 +13,10 @@ uniform sampler2D src;
 uniform sampler2D blurred;
 void main() {
     float lFringe = params.fringe;  // 002: 0.7
-    vec2 lInverseTextureSize = 1.0 / vec2(textureSize(blurred, 0));
+    vec2 lInverseTextureSize = 1.0 / vec2(textureSize(src, 0));  // view pixels (= blurred's at full resolution)
     ivec2 p = ivec2(gl_FragCoord.xy);
-    vec4 lColorA = texelFetch(src, p, 0), lColorB = texelFetch(blurred, p, 0);
+    vec4 lColorA = texelFetch(src, p, 0);
+    vec4 lColorB = params.resolution == RESOLUTION_HALF ? textureLod(blurred, uv, 0.0) : texelFetch(blurred, p, 0);
     float lFactor = clamp(1000.0 * (abs(lColorB.w) - 0.001), 0.0, 1.0);
     vec2 o = lInverseTextureSize * lFringe * lFactor;
     result = (lFactor < 1e-6) ? lColorA
