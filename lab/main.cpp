@@ -99,6 +99,8 @@ int main(int argc, char** argv) {
     list_cmd->add_flag("-v,--verbose", verbose, "Also print each preset's folder, level, course citations and exercise");
     bool catalogue = false;
     list_cmd->add_flag("--catalogue", catalogue, "Print the technique catalogue (docs/catalogue.md) as Markdown");
+    bool course = false;
+    list_cmd->add_flag("--course", course, "Print the course path (docs/course.md): units in teaching order, exercises and effort");
 
     RunOptions rn;
     auto* run_cmd = app.add_subcommand("run", "Live lab: a window with hot reload of every file the preset reads");
@@ -145,6 +147,9 @@ int main(int argc, char** argv) {
     auto* grade_cmd = app.add_subcommand("grade", "Grade a student's exercise copy against the preset's test cases");
     grade_cmd->add_option("preset", go.preset, "Preset folder, preset.toml, or name")->required();
     grade_cmd->add_option("--out", go.out_dir, "Folder for the images of failed cases (default grade-out)");
+    grade_cmd->add_option("--json", go.json_file, "Also write the grade as JSON (per case: status, score, figures, hint, images)");
+    grade_cmd->add_option("--format", go.format, "Schema of --json: passlab (default) or gradescope (Gradescope's results.json)")
+        ->check(CLI::IsMember({"passlab", "gradescope"}));
     add_common(grade_cmd);
     add_exercise(grade_cmd);
     grade_cmd->get_option("--exercise")->required();
@@ -152,7 +157,11 @@ int main(int argc, char** argv) {
     NewOptions no;
     auto* new_cmd = app.add_subcommand("new", "Start a preset from a copy of another (never overwrites)");
     new_cmd->add_option("dest", no.dest, "New preset folder (must not exist)")->required();
-    new_cmd->add_option("--from", no.from, "Preset to copy: folder, preset.toml, or name")->required();
+    auto* from_opt = new_cmd->add_option("--from", no.from, "Preset to copy: folder, preset.toml, or name");
+    auto* new_ex_opt = new_cmd->add_option("--exercise", no.exercise,
+                                           "Copy only PRESET's exercise/ files: a student's working copy to grade");
+    from_opt->excludes(new_ex_opt);
+    new_ex_opt->excludes(from_opt);
     new_cmd->add_flag("--with-passes", no.with_passes, "Also copy the passes/ files it reads, to edit them locally");
     add_common(new_cmd);
 
@@ -186,7 +195,7 @@ int main(int argc, char** argv) {
     if (render_cmd->parsed()) return render(ro, common);
     if (test_cmd->parsed()) return test(to, common);
     if (check_cmd->parsed()) return check(preset, set, common, spirv_dir, check_json);
-    if (list_cmd->parsed()) return list(verbose, catalogue);
+    if (list_cmd->parsed()) return list(verbose, catalogue, course);
     if (bench_cmd->parsed()) return bench(bo, common);
     if (run_cmd->parsed()) return run(rn, common);
     if (gallery_cmd->parsed()) return gallery(gallery_dir, gallery_width, common);

@@ -79,6 +79,7 @@ struct NewOptions {
     std::string dest;        // the new preset folder (must not exist)
     std::string from;        // PRESET to copy
     bool with_passes = false;  // also copy the passes/ files it reads (they shadow the library)
+    std::string exercise;    // --exercise PRESET: copy only that preset's exercise/ (a student's working copy)
 };
 
 struct MutateOptions {
@@ -101,6 +102,8 @@ struct ImportVerbOptions {
 struct GradeOptions {
     std::string preset;
     std::string out_dir = "grade-out";  // actual/expected/diff images of failed cases
+    std::string json_file;              // --json: the grade for a course platform
+    std::string format = "passlab";     // --format: passlab | gradescope (the --json schema)
 };
 
 int render(const RenderOptions& o, const CommonOptions& c);
@@ -112,7 +115,7 @@ int run(const RunOptions& o, const CommonOptions& c);
 int test(const TestOptions& o, const CommonOptions& c);
 int check(const std::string& preset, const std::vector<std::string>& set, const CommonOptions& c,
           const std::string& spirv_dir = {}, const std::string& json_file = {});
-int list(bool verbose, bool catalogue);
+int list(bool verbose, bool catalogue, bool course);
 int gallery(const std::string& out_dir, int width, const CommonOptions& c);
 int graph_dot(const std::string& preset, const CommonOptions& c);
 int mutate(const MutateOptions& o, const CommonOptions& c);

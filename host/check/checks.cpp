@@ -235,6 +235,8 @@ std::vector<CaseResult> run_preset_tests(vk::ContextSlot& slot, const fs::path& 
         cr.preset = preset;
         cr.name = t.name;
         cr.hint = t.hint;
+        cr.weight = t.weight;
+        cr.visibility = t.visibility;
         auto device = slot.get();  // a fresh one after a runaway case
         if (!device) {
             cr.error = device.error().format();

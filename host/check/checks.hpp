@@ -37,6 +37,8 @@ struct CaseResult {
     double ms = 0.0;
     std::string image_file;  // the checked image, written when a report is requested
     std::string hint;        // the case's `hint` (course exercises)
+    double weight = 1.0;     // the case's points and visibility in `passlab grade` (TestDesc)
+    std::string visibility = "visible";
 };
 
 struct RunOptions {

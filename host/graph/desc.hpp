@@ -377,6 +377,11 @@ struct TestDesc {
     std::vector<CheckDesc> checks;     // probes and properties
     std::vector<std::string> requires_features;
     std::string hint;  // shown by `passlab grade` when the case fails (course exercises)
+    // Grading (`passlab grade`): the case's points, and who sees its figures. "visible" shows
+    // them; "hidden", "after_due_date" and "after_published" (Gradescope's levels) grade the
+    // case but keep its figures, images and hint out of what the student sees.
+    double weight = 1.0;
+    std::string visibility = "visible";
     KeyLocs keys;  // "pass", "size", "set.NAME", ...
 };
 

@@ -134,6 +134,12 @@ Status parse_test_body(const toml::table& t, const std::string& file, GraphDesc&
     }
     if (auto s = r.strings("requires", d.requires_features); !s) return s;
     if (auto s = r.str("hint", d.hint); !s) return s;
+    if (auto s = r.number("weight", d.weight); !s) return s;
+    if (d.weight < 0 || d.weight > 1e6)
+        return r.error(r.what() + ": weight must be between 0 and 1000000 (the case's points in `passlab grade`)",
+                       r.value_loc("weight"));
+    if (auto s = r.choice("visibility", d.visibility, {"visible", "hidden", "after_due_date", "after_published"}); !s)
+        return s;
     return r.finish();
 }
 
