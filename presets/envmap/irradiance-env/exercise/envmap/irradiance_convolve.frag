@@ -23,9 +23,9 @@ void main() {
                 vec2 t = (vec2(x, y) + 0.5) / float(kEnvSize);
                 vec3 w = cube_face_direction(face, t);
                 vec3 L = textureLod(env, w, 0.0).rgb;
-                // TODO 1: this texel is a small light of radiance L in direction w (L349-351).
-                // Add its contribution to E: the radiance, weighted by the cosine kernel of
-                // 001 L346 (only the hemisphere around N receives light), times the part of the
+                // TODO 1: this texel is a small light of radiance L in direction w (L352). Add
+                // its contribution to E: the radiance, weighted by the cosine kernel of 001 L349
+                // (only the hemisphere around N receives light), times the part of the
                 // sphere the texel covers. Cube texels are not all the same size.
             }
     irradiance = vec4(E, 1.0);
