@@ -17,10 +17,11 @@ uniform samplerCube env;
 
 void main() {
     vec3 N = normalize(v_normal);
-    // TODO 1: the incident direction I (001 L321: the view ray, from the eye frame.camera_pos.xyz
-    // to the surface point v_world; refract() and reflect() expect it as a unit vector), the
-    // mirror direction R = I - 2 (N.I) N, and cos_i, the cosine of the angle of incidence
-    // between the ray and the normal, in [0, 1] (mind the sign: I points into the surface).
+    // TODO 1: the incident direction I (the view ray, from the eye frame.camera_pos.xyz to the
+    // surface point v_world; refract() and reflect() expect it as a unit vector), the mirror
+    // direction R = I - 2 (N.I) N (001 L251-260), and cos_i, the cosine of the angle of
+    // incidence between the ray and the normal, in [0, 1] (mind the sign: I points into the
+    // surface).
     vec3 I = vec3(0.0, 0.0, -1.0);
     vec3 R = N;
     float cos_i = 1.0;
