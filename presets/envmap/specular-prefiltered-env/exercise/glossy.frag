@@ -13,7 +13,7 @@ layout(location = 0) out vec4 hdr;
 uniform samplerCube prefiltered;
 uniform samplerCube env;
 void main() {
-    // TODO 3: the direction the lobe was centred on when the map was made (L341), then the
+    // TODO 3: the direction the lobe was centred on when the map was made (L340), then the
     // lookup in `prefiltered` (or in `env` when params.lookup == LOOKUP_SOURCE), and the colour
     // specular * P + diffuse.
     vec3 spec = vec3(0.0);
