@@ -24,6 +24,7 @@ layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;
 layout(location = 0) out vec4 hdr;
 layout(location = 1) out vec4 chord;   // sphere only: |d - chord| / chord, chord, |d - chord| / diameter, 1
+layout(location = 2) out vec4 exit_dir;  // sphere only: |T2 - (2 (I.T1) T1 - I)|, 1 where T2 was refracted at a back face (tests)
 uniform samplerCube env;
 uniform sampler2D back_normal;
 uniform sampler2D back_depth;
@@ -49,6 +50,7 @@ void main() {
     vec3 T1 = refract(I, N1, 1.0 / eta);  // entering a denser medium: never total reflection
     vec3 T2 = T1;
     float d = 0.0;
+    bool exited = false;  // T2 refracted at a back face (tests)
     if (params.surfaces == SURFACES_TWO) {
         // Binary search for the exit point along T1.
         vec3 A = P1, B = P1 + MAX_CHORD * T1;
@@ -64,6 +66,7 @@ void main() {
         if (n2.w > 0.0) {  // w = 0: no back face at P2's pixel (the teapot's open rim): leave T1
             vec3 N2 = normalize(n2.xyz);
             T2 = refract(T1, -N2, eta);  // leaving: glass -> air, the normal against the ray
+            exited = dot(T2, T2) > 0.0;
             if (dot(T2, T2) == 0.0) T2 = reflect(T1, -N2);  // total internal reflection
         }
     }
@@ -74,4 +77,8 @@ void main() {
     float chord_true = -2.0 * dot(T1, Ps);
     float err = abs(d - chord_true);
     chord = params.model == MODEL_SPHERE ? vec4(err / chord_true, chord_true, err / (2.0 * kSphereRadius), 1.0) : vec4(0.0);
+    // A sphere is symmetric about the plane through its centre with normal T1, which swaps P1 and
+    // P2: the ray leaves as the mirror image of the one that came in, T2 = 2 (I.T1) T1 - I.
+    vec3 T2_sym = 2.0 * dot(I, T1) * T1 - I;
+    exit_dir = params.model == MODEL_SPHERE && exited ? vec4(length(T2 - T2_sym), 1.0, 0.0, 1.0) : vec4(0.0);
 }
