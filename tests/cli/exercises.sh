@@ -2,12 +2,12 @@
 # Every presets/<family>/<name>/exercise/ folder is a working exercise: as shipped (with its
 # TODOs) `passlab grade` fails, and with the reference's own files in its place it passes. So an
 # exercise can neither be solved already nor refer to a file the preset does not have.
-# Usage: exercises.sh PASSLAB WORKDIR
+# Usage: exercises.sh PASSLAB WORKDIR [FAMILY]   (FAMILY: only presets/FAMILY; ctest runs one per family)
 set -eu
-passlab=$1 work=$2
+passlab=$1 work=$2 family=${3:-}
 rm -rf "$work"; mkdir -p "$work"
 n=0 nm=0
-for ex in $(find presets -type d -name exercise | sort); do
+for ex in $(find "presets${family:+/$family}" -type d -name exercise | sort); do
   preset=$(dirname "$ex")
   name=$(echo "$preset" | tr / _)
   rc=0; "$passlab" grade "$preset" --exercise "$ex" --out "$work/$name.todo" > "$work/$name.todo.txt" 2>&1 || rc=$?
@@ -39,5 +39,5 @@ for ex in $(find presets -type d -name exercise | sort); do
   fi
   n=$((n + 1))
 done
-[ "$n" -gt 0 ] || { echo "FAIL: no exercise folders found" >&2; exit 1; }
-echo "exercises: $n graded (each fails as shipped and passes with the reference); $nm mistakes each caught with its hint"
+[ "$n" -gt 0 ] || { echo "FAIL: no exercise folders found in presets${family:+/$family}" >&2; exit 1; }
+echo "exercises${family:+ ($family)}: $n graded (each fails as shipped and passes with the reference); $nm mistakes each caught with its hint"
