@@ -97,10 +97,15 @@ bool GetReflection(vec3 ScreenSpaceReflectionVec, vec3 ScreenSpacePos, out vec3 
 
 void main() {
     ssr = vec4(0.0);
-    vec4 g = texture(gbuf, uv);
+    // The pixel whose ray this is: this one, or with ssr_resolution = half (the ssr image half the
+    // view in x and y) the even pixel (2i, 2j) of the full-resolution G-buffer and depth, one ray
+    // per 2x2 block; the composite reads it at p / 2. frame.resolution stays the view's.
+    vec2 st = params.ssr_resolution == SSR_RESOLUTION_HALF
+            ? (vec2(ivec2(gl_FragCoord.xy) * 2) + 0.5) * frame.resolution.zw : uv;
+    vec4 g = texture(gbuf, st);
     if (g.w <= 0.0) return;  // "black pixels do not show SSR" (L3992)
-    float z = depth_at(uv);
-    vec4 w = frame.inv_view_proj * vec4(uv * 2.0 - 1.0, z, 1.0);
+    float z = depth_at(st);
+    vec4 w = frame.inv_view_proj * vec4(st * 2.0 - 1.0, z, 1.0);
     vec3 P = w.xyz / w.w, N = normalize(g.xyz);
     vec3 V = normalize(P - frame.camera_pos.xyz), R = reflect(V, N);
     // The second point, 10 units along R as in Killing Floor 2, pulled in when R comes back
@@ -108,7 +113,7 @@ void main() {
     float L = 10.0;
     vec3 pv = (frame.view * vec4(P, 1.0)).xyz, rv = mat3(frame.view) * R;
     if (rv.z > 0.0) L = min(L, 0.9 * -pv.z / rv.z);
-    vec3 ss0 = vec3(uv, z), ss1 = to_screen(P + L * R);
+    vec3 ss0 = vec3(st, z), ss1 = to_screen(P + L * R);
     vec3 c;
     if (GetReflection(normalize(ss1 - ss0), ss0, c)) ssr = vec4(c, 1.0);
 }

@@ -1,4 +1,5 @@
 #version 450
+#extension GL_EXT_control_flow_attributes : require
 // The picture of the GI presets that gather at low resolution (reflective-shadow-maps,
 // instant-radiosity): direct light (shadow-mapped spot) plus the gathered indirect light,
 //   L = L0 + rho/pi * E,   E = gi_irradiance (the preset's gather.glsl),
@@ -36,8 +37,11 @@ vec3 upsampled_irradiance(vec3 x, vec3 n) {
         }
     if (wsum > 0.0) return sum / wsum;
     // None of the four: the same surface one low-res texel further out (thin strips along edges).
-    for (int j = -1; j <= 2; ++j)
-        for (int i = -1; i <= 2; ++i) {
+    // [[dont_unroll]]: unrolled, the 16 taps are straight-line code that llvmpipe runs (masked)
+    // for every pixel, searching or not; as a loop it is skipped when no pixel of the SIMD group
+    // needs it. The same taps in the same order: the same result, compose about 1.6x faster.
+    [[dont_unroll]] for (int j = -1; j <= 2; ++j)
+        [[dont_unroll]] for (int i = -1; i <= 2; ++i) {
             ivec2 q = clamp(base + ivec2(i, j), ivec2(0), size - 1);
             if (same_surface(q, x, n)) { sum += texelFetch(ind, q, 0).rgb; wsum += 1.0; }
         }

@@ -32,7 +32,11 @@ const float kPi = 3.14159265358979;
 const float kMinCos = 0.2;
 
 void main() {
-    ivec2 px = ivec2(gl_FragCoord.xy), size = ivec2(frame.resolution.xy);
+    // The receiver: this pixel of the g-buffer, or with ao_resolution = half every second one in
+    // x and y (the ao image is half the view: a quarter of the receivers, each still gathering
+    // its samples q_i from the full-resolution g-buffer; frame.resolution stays the view's).
+    ivec2 px = ivec2(gl_FragCoord.xy) * (params.ao_resolution == AO_RESOLUTION_HALF ? 2 : 1);
+    ivec2 size = ivec2(frame.resolution.xy);
     vec4 nw = texelFetch(normal, px, 0);
     if (nw.w == 0.0) {
         ao = 1.0;

@@ -10,9 +10,9 @@
 // agrees with rasterised methods at edges.
 //
 // The live view interleaves (interleave.glsl): this pass runs on ceil(view / k) threads, each
-// tracing one pixel of its k x k tile, the tile's cell of this frame; carry.comp (before it)
-// copies every pixel's mean forward, since a history image holds two copies that swap every
-// frame. Alpha is 1 once a pixel has a sample.
+// tracing one pixel of its k x k tile, the tile's cell of this frame. The means are updated in
+// place (each pixel is read and written by its one invocation); carry.comp (before it) zeroes
+// the pixels not yet traced since a reset. Alpha is 1 once a pixel has a sample.
 //
 // Estimates: `radiance` (the terms params.only_length selects), and with params.split also
 // `l0` (only L0) and `l1` (only L1), each from its own pathtrace_radiance call over the same
@@ -22,12 +22,9 @@
 #include "gi/pathtrace.glsl"
 #include "interleave.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(rgba32f) uniform writeonly image2D radiance;
-layout(rgba32f) uniform writeonly image2D l0;
-layout(rgba32f) uniform writeonly image2D l1;
-uniform sampler2D radiance_prev;
-uniform sampler2D l0_prev;
-uniform sampler2D l1_prev;
+layout(rgba32f) uniform image2D radiance;
+layout(rgba32f) uniform image2D l0;
+layout(rgba32f) uniform image2D l1;
 
 void main() {
     uint n = uint(max(frame.accum_frame, 0));
@@ -48,7 +45,7 @@ void main() {
         for (int s = 0; s < spp; ++s)
             batch += pathtrace_radiance(ro, rd, uvec2(p), batch_index * uint(spp) + uint(s), params.bounces, keep);
         batch /= float(spp);
-        vec3 prev = (e == 0 ? texelFetch(radiance_prev, p, 0) : (e == 1 ? texelFetch(l0_prev, p, 0) : texelFetch(l1_prev, p, 0))).rgb;
+        vec3 prev = (e == 0 ? imageLoad(radiance, p) : (e == 1 ? imageLoad(l0, p) : imageLoad(l1, p))).rgb;
         vec4 mean = vec4(batch_index == 0u ? batch : mix(prev, batch, 1.0 / float(batch_index + 1u)), 1.0);
         if (e == 0) imageStore(radiance, p, mean);
         else if (e == 1) imageStore(l0, p, mean);

@@ -15,16 +15,30 @@ layout(rgba16f) writeonly uniform image2D raw;
 void main() {
     ivec2 block = ivec2(gl_GlobalInvocationID.xy), size = imageSize(raw);
     int chosen = int(frame.index % 4u);
-    for (int k = 0; k < 4; ++k) {
+    bool every = params.sampling == SAMPLING_EVERY;
+    // The pixels that trace: all four of the block (sampling = every), or the chosen one. A loop
+    // over exactly those, not over all four with a per-pixel test: llvmpipe runs a fixed
+    // four-pass loop unrolled, each copy's trace (masked) whether its pixel samples or not.
+    for (int k = every ? 0 : chosen; k < (every ? 4 : chosen + 1); ++k) {
         ivec2 p = 2 * block + ivec2(k & 1, k >> 1);
         if (any(greaterThanEqual(p, size))) continue;
         vec4 pos = texelFetch(g_position, p, 0);
         vec4 gn = texelFetch(g_normal, p, 0);
-        bool sampled = pos.w > 0.0 && (params.sampling == SAMPLING_EVERY || k == chosen);
+        bool sampled = pos.w > 0.0;
         vec3 c = vec3(0.0);
         if (pos.w == 0.0) c = kSky;
-        else if (sampled) c = scene_sample(pos.xyz, gn.xyz, albedo_of(gn.w), scene_random(p, frame.index, 0u));
-        if (params.signal == SIGNAL_CONSTANT && (sampled || pos.w == 0.0)) c = vec3(0.5);
+        else c = scene_sample(pos.xyz, gn.xyz, albedo_of(gn.w), scene_random(p, frame.index, 0u));
+        if (params.signal == SIGNAL_CONSTANT) c = vec3(0.5);
         imageStore(raw, p, vec4(c, sampled ? 1.0 : 0.0));
+    }
+    if (every) return;
+    // The other three: holes (a = 0), or the sky's value.
+    for (int k = 0; k < 4; ++k) {
+        ivec2 p = 2 * block + ivec2(k & 1, k >> 1);
+        if (k == chosen || any(greaterThanEqual(p, size))) continue;
+        bool sky = texelFetch(g_position, p, 0).w == 0.0;
+        vec3 c = sky ? kSky : vec3(0.0);
+        if (params.signal == SIGNAL_CONSTANT && sky) c = vec3(0.5);
+        imageStore(raw, p, vec4(c, 0.0));
     }
 }

@@ -16,12 +16,15 @@ uniform sampler2D rays;
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec3 base = texelFetch(lit, p, 0).rgb;
-    vec4 g = texelFetch(gbuf, p, 0), s = texelFetch(ssr, p, 0), r = texelFetch(rays, p, 0);
+    // ssr_resolution = half: SSR and the rays once per 2x2 block, the nearest.
+    ivec2 ph = params.ssr_resolution == SSR_RESOLUTION_HALF ? p / 2 : p;
+    vec4 g = texelFetch(gbuf, p, 0);
     hdr = vec4(base, 1.0);
     if (g.w <= 0.0) {
         if (params.show != SHOW_FINAL) hdr = vec4(base * 0.25, 1.0);
         return;
     }
+    vec4 s = texelFetch(ssr, ph, 0), r = texelFetch(rays, ph, 0);  // read on the mirror only
     vec4 w = frame.inv_view_proj * vec4(uv * 2.0 - 1.0, texelFetch(depth, p, 0).r, 1.0);
     vec3 V = normalize(w.xyz / w.w - frame.camera_pos.xyz), R = reflect(V, normalize(g.xyz));
     vec3 refl = s.a > 0.0 ? s.rgb : r.a > 0.0 ? r.rgb : params.fallback ? sky_color(R) : base;

@@ -12,11 +12,14 @@ layout(rgba16f) writeonly uniform image2D rays;  // rgb reflected colour, a: ray
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy), size = imageSize(rays);
     if (any(greaterThanEqual(p, size))) return;
-    vec4 g = texelFetch(gbuf, p, 0);
+    // ssr_resolution = half: rays (and ssr) are half the view, one ray per 2x2 block from its
+    // even pixel of the full-resolution G-buffer and depth, as passes/envmap/ssr.frag does.
+    ivec2 q = params.ssr_resolution == SSR_RESOLUTION_HALF ? p * 2 : p;
+    vec4 g = texelFetch(gbuf, q, 0);
     vec4 result = vec4(0.0);
     if (g.w > 0.0 && (ALL == 1 || texelFetch(ssr, p, 0).a == 0.0)) {
-        vec2 uv = (vec2(p) + 0.5) / vec2(size);
-        vec4 w = frame.inv_view_proj * vec4(uv * 2.0 - 1.0, texelFetch(depth, p, 0).r, 1.0);
+        vec2 uv = (vec2(q) + 0.5) / vec2(textureSize(depth, 0));
+        vec4 w = frame.inv_view_proj * vec4(uv * 2.0 - 1.0, texelFetch(depth, q, 0).r, 1.0);
         vec3 P = w.xyz / w.w, N = normalize(g.xyz);
         vec3 R = reflect(normalize(P - frame.camera_pos.xyz), N);
         result = hybrid_trace_reflection(P, N, R, params.specular);
