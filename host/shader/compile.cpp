@@ -112,11 +112,58 @@ int culprit_column(const std::string& msg, const std::string& source) {
     return 0;
 }
 
+// The member names of the block or struct variable `instance` declared in `text`
+// ("uniform PasslabParams { float scale; int octaves; } params;" -> scale, octaves), or of the
+// struct type of a declaration "Light instance;". Empty when it cannot be found.
+std::vector<std::string> members_of(const std::string& text, const std::string& instance) {
+    auto members_in = [&](size_t open, size_t close) {
+        std::vector<std::string> names;
+        std::string body = text.substr(open + 1, close - open - 1);
+        size_t start = 0;
+        for (size_t semi = body.find(';'); semi != std::string::npos; start = semi + 1, semi = body.find(';', start)) {
+            std::string decl = body.substr(start, semi - start);
+            if (size_t b = decl.find('['); b != std::string::npos) decl.resize(b);  // "float w[4]"
+            size_t e = decl.find_last_not_of(" \t\r\n");
+            if (e == std::string::npos) continue;
+            size_t b = e;
+            while (b > 0 && (std::isalnum(static_cast<unsigned char>(decl[b - 1])) || decl[b - 1] == '_')) --b;
+            if (b <= e) names.push_back(decl.substr(b, e - b + 1));
+        }
+        return names;
+    };
+    auto brace_before = [&](size_t close) -> size_t {
+        int depth = 0;
+        for (size_t k = close + 1; k-- > 0;) {
+            if (text[k] == '}') ++depth;
+            else if (text[k] == '{' && --depth == 0) return k;
+        }
+        return std::string::npos;
+    };
+    // "} instance;" closes a block or an inline struct declaration.
+    auto find_from = [&](size_t from) {
+        size_t r = scan::find_word(std::string_view(text).substr(from), instance);
+        return r == std::string::npos ? r : r + from;
+    };
+    for (size_t at = find_from(0); at != std::string::npos; at = find_from(at + instance.size())) {
+        size_t k = at;
+        while (k > 0 && std::isspace(static_cast<unsigned char>(text[k - 1]))) --k;
+        size_t after = at + instance.size();
+        while (after < text.size() && std::isspace(static_cast<unsigned char>(text[after]))) ++after;
+        if (k > 0 && text[k - 1] == '}' && after < text.size() && (text[after] == ';' || text[after] == '['))
+            if (size_t open = brace_before(k - 1); open != std::string::npos) return members_in(open, k - 1);
+    }
+    return {};
+}
+
 // glslang's info log -> Error at path:line:col with the source line. `stage_files` names the
 // file of each stage, for link errors ("Linking vertex stage: Missing entry point"), which have
 // no line; `fallback_file` is blamed when nothing names one.
+//
+// `text` is the expanded source glslang saw: a "'x' : no such field in structure 'params'" gets
+// the nearest member of that block as "did you mean 'params.y'?" (params, frame, a user's UBO).
 Error parse_log(const std::string& log, Stage stage, const std::map<std::string, fs::path>& files,
-                const std::string& fallback_file, const std::map<Stage, std::string>& stage_files = {}) {
+                const std::string& fallback_file, const std::map<Stage, std::string>& stage_files = {},
+                const std::string& text = {}) {
     std::vector<Error> errors;
     std::istringstream in(log);
     std::string line;
@@ -137,6 +184,19 @@ Error parse_log(const std::string& log, Stage stage, const std::map<std::string,
             // The token is only where the parser noticed; the mistake is usually just before.
             if (msg.find("syntax error") != std::string::npos && msg.find("expecting COMMA or SEMICOLON") != std::string::npos)
                 e.hint = "a ';' is probably missing at the end of the statement before this line";
+            if (auto f = msg.find("' : no such field in structure '"); f != std::string::npos && !msg.empty() && msg[0] == '\'') {
+                std::string field = msg.substr(1, f - 1);
+                size_t s0 = f + std::string("' : no such field in structure '").size();
+                std::string instance = msg.substr(s0, msg.find('\'', s0) - s0);
+                auto names = members_of(text, instance);
+                std::string near = nearest_name(field, names);
+                if (!near.empty()) e.hint = "did you mean '" + instance + "." + near + "'?";
+                if (!names.empty()) {
+                    std::string all;
+                    for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+                    e.notes.push_back(instance + " has: " + all);
+                }
+            }
             errors.push_back(std::move(e));
         } else if (line.rfind("ERROR: ", 0) == 0 && line.find("compilation errors") == std::string::npos) {
             other.push_back(line.substr(7));
@@ -258,7 +318,7 @@ Result<Program> compile_program(const std::vector<StageInput>& stages, const Com
             sh->setAutoMapBindings(true);
             sh->setAutoMapLocations(true);
             if (!sh->parse(GetDefaultResources(), 450, false, msgs))
-                return parse_log(sh->getInfoLog(), stages[i].stage, shown_to_disk, shown_names[i]);
+                return parse_log(sh->getInfoLog(), stages[i].stage, shown_to_disk, shown_names[i], {}, texts[i]);
             program.addShader(sh.get());
             shaders.push_back(std::move(sh));
         }

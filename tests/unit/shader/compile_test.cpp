@@ -210,3 +210,29 @@ TEST_F(ShaderTest, CacheHitsAndMissesOnIncludeChange) {
     ASSERT_TRUE(c);
     EXPECT_FALSE(c->from_cache);
 }
+
+// A misspelt member of a uniform block (params.X, frame.X, a user's block) is answered with the
+// nearest member and the list of members, at the misspelling's file:line:col.
+TEST_F(ShaderTest, MisspeltBlockMemberSuggestsTheNearest) {
+    auto f = write("typo.frag", std::string("#version 450\n") + kOut +
+                                    "layout(set = 0, binding = 0) uniform Params { float scale; int octaves; vec4 tint[2]; } params;\n"
+                                    "void main() { color = vec4(params.scael); }\n");
+    auto p = frag(f);
+    ASSERT_FALSE(p.ok());
+    EXPECT_EQ(p.error().loc.line, 4);
+    EXPECT_GT(p.error().loc.col, 0);
+    EXPECT_EQ(p.error().hint, "did you mean 'params.scale'?") << p.error().format();
+    ASSERT_FALSE(p.error().notes.empty());
+    EXPECT_EQ(p.error().notes.front(), "params has: scale, octaves, tint");
+}
+
+TEST_F(ShaderTest, AFieldFarFromEveryMemberGetsOnlyTheList) {
+    auto f = write("far.frag", std::string("#version 450\n") + kOut +
+                                   "layout(set = 0, binding = 0) uniform Params { float scale; } params;\n"
+                                   "void main() { color = vec4(params.brightness); }\n");
+    auto p = frag(f);
+    ASSERT_FALSE(p.ok());
+    EXPECT_EQ(p.error().hint.find("did you mean"), std::string::npos) << p.error().hint;
+    ASSERT_FALSE(p.error().notes.empty());
+    EXPECT_EQ(p.error().notes.front(), "params has: scale");
+}
