@@ -6,15 +6,14 @@
 //           with d_k = the trilinear sample of the 3D texture at step k and o(d) the opacity
 //           part of the transfer function (the shell faint, the lesions dense, so they show).
 // filtering: the same voxels through two samplers, `volume` (trilinear) and its alias
-// `volume_nearest` (nearest voxel), both clamped to the edge.
+// `volume_nearest` (nearest voxel), both clamped to the edge. Two passes share this shader, one
+// per sampler (preset.toml: `render_nearest` binds `volume` to the alias), so each step takes
+// one sample (on lavapipe a branch between the two samplers would run both).
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 hdr;
 uniform sampler3D volume;
-uniform sampler3D volume_nearest;
 
-float density(vec3 t) {
-    return params.filtering == FILTERING_LINEAR ? texture(volume, t).r : texture(volume_nearest, t).r;
-}
+float density(vec3 t) { return texture(volume, t).r; }
 
 // The transfer function: a colour and an opacity per density — air, tissue (up to 0.3),
 // shell (0.3 .. 0.65), lesions (above).
