@@ -1,7 +1,8 @@
 // Which filter a pixel shows (display.frag) and which ones a pixel must evaluate
-// (the filter passes, reference.frag). With params.analysis off, each pixel evaluates only the
-// filter(s) of the strip(s) within 2 pixels of its column, so the picture is the same as with
-// everything evaluated, at a fraction of the cost; the analysis needs all four everywhere.
+// (reference.frag: filter_needed; the filter passes: filter_columns, the plane clipped to them
+// in ground.vert). With params.analysis off, each pixel evaluates only the filter(s) of the
+// strip(s) within 2 pixels of its column, so the picture is the same as with everything
+// evaluated, at a fraction of the cost; the analysis needs all four everywhere.
 #ifndef ANISO_STRIPS_GLSL
 #define ANISO_STRIPS_GLSL
 // The strip shown at horizontal position u in [0, 1] (display.frag's uv.x).
