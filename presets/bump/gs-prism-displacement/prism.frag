@@ -69,10 +69,12 @@ float prism_exit(vec3 o, vec3 dir, vec3 entry, vec3 d) {
     float best = leave(o, dir, q[0], q[1], q[2], 1.0);
     for (int e = 0; e < 3; ++e) {
         int i = e, j = (e + 1) % 3;
-        if (prism_diagonal_from_i(p[i], p[j]))   // split along p_i - q_j, as prism.geom draws it
-            best = min(best, min(leave(o, dir, q[i], p[i], q[j], 1.0), leave(o, dir, p[i], p[j], q[j], 1.0)));
-        else                                     // split along p_j - q_i
-            best = min(best, min(leave(o, dir, p[i], p[j], q[i], 1.0), leave(o, dir, p[j], q[j], q[i], 1.0)));
+        // The quad's two triangles, split along p_i - q_j or p_j - q_i as prism.geom draws it
+        // (chosen by select, not by a branch: on lavapipe both sides of a branch run).
+        bool from_i = prism_diagonal_from_i(p[i], p[j]);
+        vec3 a1 = from_i ? q[i] : p[i], b1 = from_i ? p[i] : p[j], c1 = from_i ? q[j] : q[i];
+        vec3 a2 = from_i ? p[i] : p[j], b2 = from_i ? p[j] : q[j], c2 = from_i ? q[j] : q[i];
+        best = min(best, min(leave(o, dir, a1, b1, c1, 1.0), leave(o, dir, a2, b2, c2, 1.0)));
     }
     float base = -dot(cross(p[1] - p[0], p[2] - p[0]), dir) > 0.0 ? ray_triangle_margin(o, dir, p[0], p[1], p[2], kBaseMargin) : 1e9;
     base = base > -1e-6 ? max(base, 0.0) : 1e9;

@@ -18,13 +18,17 @@
 // The hardware path is lavapipe's (Mesa 22.3): an elliptical weighted average (Heckbert) over
 // the texels of the ellipse, not N taps; it derives the ellipse from the quad's own coordinate
 // differences even under textureGrad, so the plane is drawn as a mesh (smooth helper lanes).
+// One filter per pass (FILTER, a define: SHOW_TRILINEAR, SHOW_HARDWARE or SHOW_SHADER), each pass
+// writing its own image; ground.vert clips the plane to the strip that shows the filter.
 layout(location = 0) in vec2 v_t;
-layout(location = 0) out vec4 trilinear_out;   // hardware trilinear, anisotropy off
-layout(location = 1) out vec4 hardware_out;    // hardware trilinear + anisotropy 16
-layout(location = 2) out vec4 shader_out;      // N trilinear taps along the major axis
-uniform sampler2D tex_trilinear;
-uniform sampler2D tex_aniso16;
-#include "strips.glsl"
+layout(location = 0) out vec4 result;
+#if FILTER == SHOW_SHADER
+uniform sampler2D tex_trilinear;   // N trilinear taps along the major axis
+#elif FILTER == SHOW_HARDWARE
+uniform sampler2D tex_aniso16;     // hardware trilinear + anisotropy 16
+#else
+uniform sampler2D tex_trilinear;   // hardware trilinear, anisotropy off
+#endif
 
 vec4 texture_aniso(sampler2D s, vec2 t, vec2 dtdx, vec2 dtdy, int max_taps) {
     vec2 size = vec2(textureSize(s, 0));
@@ -42,13 +46,14 @@ vec4 texture_aniso(sampler2D s, vec2 t, vec2 dtdx, vec2 dtdy, int max_taps) {
 }
 
 void main() {
-    vec2 dtdx = dFdx(v_t), dtdy = dFdy(v_t);
-    // Only the filters shown near this column (all of them with params.analysis); the
-    // condition is the same for both columns of a quad (strips.glsl), so texture()'s implicit
-    // derivatives are defined. Unevaluated targets get 0 (never displayed).
-    float x = gl_FragCoord.x;
-    trilinear_out = filter_needed(SHOW_TRILINEAR, x) ? vec4(texture(tex_trilinear, v_t).rgb, 1.0) : vec4(0.0);
-    hardware_out  = filter_needed(SHOW_HARDWARE, x) ? vec4(texture(tex_aniso16, v_t).rgb, 1.0) : vec4(0.0);
-    shader_out    = filter_needed(SHOW_SHADER, x)
-                  ? vec4(texture_aniso(tex_trilinear, v_t, dtdx, dtdy, params.max_taps).rgb, 1.0) : vec4(0.0);
+    // Every fragment that reaches here needs this pass's filter: with params.analysis off the
+    // plane is clipped to the filter's strip (ground.vert, strips.glsl), so the filter runs
+    // only where it is shown (on lavapipe an untaken branch still costs its full price).
+#if FILTER == SHOW_SHADER
+    result = vec4(texture_aniso(tex_trilinear, v_t, dFdx(v_t), dFdy(v_t), params.max_taps).rgb, 1.0);
+#elif FILTER == SHOW_HARDWARE
+    result = vec4(texture(tex_aniso16, v_t).rgb, 1.0);
+#else
+    result = vec4(texture(tex_trilinear, v_t).rgb, 1.0);
+#endif
 }

@@ -9,6 +9,19 @@ uniform sampler2D tex_level0;
 #include "strips.glsl"
 void main() {
     if (!filter_needed(SHOW_REFERENCE, gl_FragCoord.x)) { reference_out = vec4(0.0); return; }
+    // A pixel whose four corners all look above the horizon has no sample on the plane: the
+    // height of the ray's far-plane point above the eye, w.y / w.w - o.y (the sign of d.y in
+    // ground_uv), is affine in the pixel position, so its minimum over the pixel is at a corner.
+    // 1e-3 (far-plane units, ~100 away) is far above the rounding of either evaluation, so the
+    // pixels skipped are exactly those whose every sample ground_uv refuses (the loop would
+    // give the same vec4(0); on lavapipe it is skipped only where a whole group of pixels is sky).
+    float lowest = 1e30;
+    for (int c = 0; c < 4; ++c) {
+        vec2 ndc = (floor(gl_FragCoord.xy) + vec2(c & 1, c >> 1)) * frame.resolution.zw * 2.0 - 1.0;
+        vec4 w = frame.inv_view_proj * vec4(ndc, 1.0, 1.0);
+        lowest = min(lowest, w.y / w.w - frame.camera_pos.y);
+    }
+    if (lowest > 1e-3) { reference_out = vec4(0.0); return; }
     int n = params.ref_grid;
     vec3 sum = vec3(0.0);
     float hits = 0.0;
