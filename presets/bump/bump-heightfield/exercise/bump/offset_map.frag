@@ -1,0 +1,34 @@
+#version 450
+// EXERCISE (bump/bump-heightfield): TODO 1 below; TODO 2-3 in blinn_bump.glsl, TODO 4 in ../shade.frag.
+// Offset map from a height field (000_c9f7e5de708ecbb3.txt L2479-2484: "encode orthogonal
+// offsets (dh/du, dh/dv) ... calculate using finite differencing on height field"):
+//     h_u ~ (h[x+1] - h[x-1]) / (2 / width),   h_v likewise,   in height units per uv unit
+// Writes (h, h_u, h_v, 0) to a float target of the height map's size. The height is read from
+// the alpha of `heights` (the layout of bump/heightfield.frag). OFFSET_WRAP 1 (default): the
+// field tiles (wrap around); 0: one-sided differences at the border (a ramp stays exact).
+layout(location = 0) out vec4 offsets;
+uniform sampler2D heights;
+#ifndef OFFSET_WRAP
+#define OFFSET_WRAP 1
+#endif
+float h_at(ivec2 p, ivec2 size) {
+#if OFFSET_WRAP
+    p = (p + size) % size;
+#endif
+    return texelFetch(heights, p, 0).a;
+}
+void main() {
+    ivec2 size = textureSize(heights, 0), p = ivec2(gl_FragCoord.xy);
+    ivec2 lo = p - 1, hi = p + 1;
+#if !OFFSET_WRAP
+    lo = max(lo, ivec2(0)), hi = min(hi, size - 1);
+#endif
+    // TODO 1: the offsets h_u = dh/du, h_v = dh/dv by finite differencing on the height field
+    // (000_c9f7e5de708ecbb3.txt L2484, 001_fe43b953f362fae7.txt L780): the difference of the
+    // heights at texels hi and lo (h_at(ivec2(x, y), size)) along x for h_u, along y for h_v,
+    // divided by the distance between those two texels measured in uv (a texel is 1/size wide;
+    // at the border, without wrap, lo or hi is clamped to p).
+    float h_u = 0.0;
+    float h_v = 0.0;
+    offsets = vec4(h_at(p, size), h_u, h_v, 0.0);
+}
