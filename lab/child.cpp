@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <poll.h>
@@ -12,12 +13,37 @@
 
 namespace pl::lab {
 
+std::string find_on_path(const std::string& name) {
+    if (name.find('/') != std::string::npos) return access(name.c_str(), X_OK) == 0 ? name : std::string();
+    const char* path = std::getenv("PATH");
+    std::string dirs = path ? path : "/usr/bin:/bin";
+    for (size_t start = 0; start <= dirs.size();) {
+        size_t end = dirs.find(':', start);
+        if (end == std::string::npos) end = dirs.size();
+        std::string dir = dirs.substr(start, end - start);
+        std::string full = (dir.empty() ? "." : dir) + "/" + name;
+        if (access(full.c_str(), X_OK) == 0) return full;
+        start = end + 1;
+    }
+    return {};
+}
+
 ChildResult run_self(const std::vector<std::string>& args, double timeout_s) {
-    ChildResult r;
     char exe[4096];
     ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (n <= 0) return r.error = "cannot find the passlab executable (/proc/self/exe)", r;
+    if (n <= 0) {
+        ChildResult r;
+        r.error = "cannot find the passlab executable (/proc/self/exe)";
+        return r;
+    }
     exe[n] = '\0';
+    return run_program(exe, args, timeout_s);
+}
+
+ChildResult run_program(const std::string& program, const std::vector<std::string>& args, double timeout_s) {
+    ChildResult r;
+    std::string exe = find_on_path(program);
+    if (exe.empty()) return r.error = "'" + program + "' is not installed (not found on PATH)", r;
     int fds[2];
     if (pipe(fds) != 0) return r.error = std::string("pipe: ") + std::strerror(errno), r;
     std::vector<std::string> argv_s{exe};
@@ -34,7 +60,7 @@ ChildResult run_self(const std::vector<std::string>& args, double timeout_s) {
         dup2(fds[1], 2);
         close(fds[0]);
         close(fds[1]);
-        execv(exe, argv.data());
+        execv(exe.c_str(), argv.data());
         _exit(127);
     }
     setpgid(pid, pid);

@@ -17,7 +17,12 @@ struct ChildResult {
     std::string error;       // why it could not be started
 };
 
-// Runs this executable (/proc/self/exe) with `args`; kills its process group after `timeout_s`.
+// Runs `program` (a path, or a name looked up on PATH) with `args`, no shell; kills its process
+// group after `timeout_s`. Exit code 127: it could not be executed.
+ChildResult run_program(const std::string& program, const std::vector<std::string>& args, double timeout_s);
+// Runs this executable (/proc/self/exe) with `args`.
 ChildResult run_self(const std::vector<std::string>& args, double timeout_s);
+// The full path of `name` on PATH, or "" when there is none.
+std::string find_on_path(const std::string& name);
 
 } // namespace pl::lab

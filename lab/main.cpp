@@ -60,6 +60,8 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--set", ro.set, "Param override name=value (repeatable)");
     render_cmd->add_option("--pass", ro.passes, "Also write this image (repeatable)");
     render_cmd->add_option("--format", ro.format, "Force png or exr")->check(CLI::IsMember({"png", "exr"}));
+    render_cmd->add_flag("--sequence", ro.sequence, "Write the output image of every frame: <preset>.00000.png, ...");
+    render_cmd->add_option("--video", ro.video, "Encode every frame into FILE.mp4 or FILE.gif with ffmpeg (1/step frames per second)");
     add_common(render_cmd);
     add_exercise(render_cmd);
 

@@ -1,8 +1,11 @@
 // `passlab render`: headless, deterministic. Frames are rendered with a fixed step; the last one
 // is at --time. The output image (and every --pass image) is written as PNG for 8-bit formats
-// and EXR for float formats, named <preset>[.<image>].<ext> in the output folder.
+// and EXR for float formats, named <preset>[.<image>].<ext> in the output folder. `--sequence`
+// also writes the output of every frame (<preset>.00000.png, ...); `--video FILE` encodes those
+// frames with ffmpeg (lab/video.hpp) from a scratch folder that is removed afterwards.
 #include "verbs.hpp"
 #include "sources.hpp"
+#include "video.hpp"
 
 #include "exec/build.hpp"
 #include "exec/executor.hpp"
@@ -13,6 +16,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -22,6 +26,24 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+// A float image is written as EXR, anything 8-bit as PNG (unless --format says otherwise).
+std::string extension_for(const graph::GraphDesc& desc, const std::string& image, const std::string& forced) {
+    if (!forced.empty()) return forced;
+    const graph::ImageDesc* d = desc.find_image(image);
+    const vk::FormatInfo* fi = d ? vk::find_format(d->format) : nullptr;
+    bool hdr = fi && (fi->bytes_per_texel / std::max(1, fi->components)) >= 2 && !fi->is_integer;
+    return hdr ? "exr" : "png";
+}
+
+// The frames --video encodes, in a scratch folder of their own that never outlives the render.
+struct ScratchDir {
+    fs::path path;
+    ~ScratchDir() {
+        std::error_code ec;
+        if (!path.empty()) fs::remove_all(path, ec);
+    }
+};
 
 } // namespace
 
@@ -48,6 +70,32 @@ int render(const RenderOptions& o, const CommonOptions& c) {
         }
         images.push_back(p);
     }
+    if (!o.video.empty()) {
+        if (auto s = check_video_target(o.video); !s) return report(s.error());
+        if (extension_for(built->desc, built->desc.output, o.format) != "png") {
+            Error e = make_error("--video: the output image '" + built->desc.output +
+                                 "' is not 8-bit; a video needs the preset's display image (drop --format exr)");
+            e.code = ExitCode::usage;
+            return report(e);
+        }
+    }
+    std::error_code dir_ec;
+    fs::create_directories(o.out_dir, dir_ec);
+    if (dir_ec) {
+        Error e = make_error("cannot create output folder '" + o.out_dir + "': " + dir_ec.message());
+        e.code = ExitCode::environment;
+        return report(e);
+    }
+    ScratchDir scratch;
+    if (!o.video.empty()) {
+        scratch.path = fs::temp_directory_path(dir_ec) / ("passlab-video-" + std::to_string(getpid()));
+        fs::create_directories(scratch.path, dir_ec);
+        if (dir_ec) {
+            Error e = make_error("--video: cannot create a scratch folder " + scratch.path.string() + ": " + dir_ec.message());
+            e.code = ExitCode::environment;
+            return report(e);
+        }
+    }
 
     auto t1 = Clock::now();
     vk::ContextOptions co;
@@ -59,6 +107,7 @@ int render(const RenderOptions& o, const CommonOptions& c) {
 
     auto t2 = Clock::now();
     const std::string stem = preset_name(built->desc.dir);
+    const std::string out_ext = extension_for(built->desc, built->desc.output, o.format);
     auto ex = exec::Executor::create(**ctx, std::move(built.value()));
     if (!ex) return report(ex.error());
     (*ex)->set_timeout(timeout(c));
@@ -75,26 +124,31 @@ int render(const RenderOptions& o, const CommonOptions& c) {
             if ((*ctx)->hung()) exit_after_hang(rc);
             return rc;
         }
+        for (const fs::path& dir : {o.sequence ? fs::path(o.out_dir) : fs::path(), scratch.path}) {
+            if (dir.empty()) continue;
+            auto img = (*ex)->read((*ex)->graph().desc.output);
+            if (!img) return report(img.error());
+            char num[16];
+            std::snprintf(num, sizeof num, "%05d", f);
+            fs::path file = dir / (stem + "." + num + "." + out_ext);
+            if (auto s = image::save_image(*img, file); !s) return report(s.error());
+            if (dir == fs::path(o.out_dir)) std::printf("%s\n", file.string().c_str());
+        }
     }
     double t_frames = ms_since(t3);
+    if (!o.video.empty()) {
+        double fps = o.step > 0 ? 1.0 / o.step : 60.0;
+        if (auto s = encode_video(scratch.path, stem, fps, o.video); !s) return report(s.error());
+        std::printf("%s\n", o.video.c_str());
+    }
 
     auto t4 = Clock::now();
-    std::error_code ec;
-    fs::create_directories(o.out_dir, ec);
-    if (ec) {
-        Error e = make_error("cannot create output folder '" + o.out_dir + "': " + ec.message());
-        e.code = ExitCode::environment;
-        return report(e);
-    }
     const auto& g = (*ex)->graph();
     for (size_t k = 0; k < images.size(); ++k) {
         const std::string& name = images[k];
         auto img = (*ex)->read(name);
         if (!img) return report(img.error());
-        const graph::ImageDesc* d = g.desc.find_image(name);
-        const vk::FormatInfo* fi = vk::find_format(d->format);
-        bool hdr = fi && (fi->bytes_per_texel / std::max(1, fi->components)) >= 2 && !fi->is_integer;
-        std::string ext = o.format.empty() ? (hdr ? "exr" : "png") : o.format;
+        std::string ext = extension_for(g.desc, name, o.format);
         fs::path file = fs::path(o.out_dir) / (stem + (k == 0 ? "" : "." + name) + "." + ext);
         if (auto s = image::save_image(*img, file); !s) return report(s.error());
         std::printf("%s\n", file.string().c_str());

@@ -32,6 +32,8 @@ struct RenderOptions {
     std::vector<std::string> set;
     std::vector<std::string> passes;  // extra images to write
     std::string format;               // "", "png", "exr"
+    bool sequence = false;            // --sequence: the output image of every frame, numbered
+    std::string video;                // --video FILE.mp4|.gif: every frame encoded by ffmpeg
 };
 
 struct TestOptions {

@@ -17,7 +17,14 @@ PACKAGES=(
   python3
 )
 # `deps.sh --fuzz`: also clang and its libFuzzer/sanitizer runtime, for tests/fuzz/campaign.sh.
-if [ "${1:-}" = "--fuzz" ]; then PACKAGES+=(clang libclang-rt-14-dev); fi
+# `deps.sh --video`: also ffmpeg, for `passlab render --video FILE.mp4|.gif`.
+for arg in "$@"; do
+  case "$arg" in
+    --fuzz) PACKAGES+=(clang libclang-rt-14-dev) ;;
+    --video) PACKAGES+=(ffmpeg) ;;
+    *) echo "deps.sh: unknown option $arg (known: --fuzz, --video)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${PACKAGES[@]}"; do

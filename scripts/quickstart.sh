@@ -9,7 +9,8 @@ cd "$(dirname "$0")/.."
 mode="${1:-render}"
 case "$mode" in render|test) ;; *) echo "usage: $0 [render|test]" >&2; exit 2;; esac
 
-scripts/deps.sh
+# The test suite also covers `render --video`, so it installs ffmpeg too (deps.sh --video).
+if [ "$mode" = test ]; then scripts/deps.sh --video; else scripts/deps.sh; fi
 
 preset=default
 if [ "${CI:-}" = "true" ]; then preset=ci; fi
