@@ -37,7 +37,7 @@ void main() {
         ivec2 q = clamp(px + ivec2(round(fr * vec2(cos(a), sin(a)))), ivec2(0), last);
         float dist = length(vec2(q - px));
         float r_q = min(abs(texelFetch(coc, q, 0).x) * h, kMaxRadius);
-        // TODO 2: scatter as gather (L3140-3145): tap q counts if its own circle of confusion
+        // TODO 2: scatter as gather (L3140-3143): tap q counts if its own circle of confusion
         // (radius reach, pixels) reaches this pixel at distance dist. w = 1 inside the circle,
         // 0 outside, with a one-pixel linear edge: 1 at dist = reach - 0.5 down to 0 at
         // dist = reach + 0.5.
