@@ -23,7 +23,7 @@ void main() {
     }
     lOutputA.xyz = (lSampleCountA > 0.0) ? (lOutputA.xyz / lSampleCountA) : lBaseColor.xyz;
     lOutputB.xyz = (lSampleCountB > 0.0) ? (lOutputB.xyz / lSampleCountB) : lBaseColor.xyz;
-    // TODO 3 (L1362-1368): B is written for pass 2 to blur down-left into TWO rhombi (the up one
+    // TODO 3 (L1361-1363): B is written for pass 2 to blur down-left into TWO rhombi (the up one
     // and the down-right one). What must B hold besides its own down-right blur?
     if (abs(lOutputA.w) > abs(lOutputB.w)) lOutputB.w = lOutputA.w;
     hexA = lOutputA;

@@ -23,7 +23,7 @@ void main() {
         lSampleCountA += doGatherAndApply(hexA, uv + (lStepA * lStepDistance), lBaseColor.w, lStepDistance, lInverseTextureSize, lColorA);
         lSampleCountB += doGatherAndApply(hexB, uv + (lStepB * lStepDistance), lBaseColor.w, lStepDistance, lInverseTextureSize, lColorB);
     }
-    // TODO 4 (L1390-1398): normalise each 1D blur by the sum of its tap weights; where no tap
+    // TODO 4 (L1394-1396): normalise each 1D blur by the sum of its tap weights; where no tap
     // contributed (in focus) each falls back to its pixel's own value, expressed through B's
     // own colour lBaseColor (what does B hold there, after pass 1?). Then combine the three
     // normalised rhombi (A's one and B's two) into their average, in rgb.
