@@ -48,7 +48,7 @@ void main() {
     vec2 wh = uCanvasInvSize * blur;
     float scale = params.resolution == RESOLUTION_FULL ? 1.0 : 2.0;  // view pixels per gather pixel
     if (length(wh) > 0.0005) {
-        // TODO 3 (L1540-1556): s is the sum of the weights; the pixel itself (already in c) counts 1.
+        // TODO 3 (L1539-1556): s is the sum of the weights; the pixel itself (already in c) counts 1.
         vec3 s = vec3(0.0);
         vec2 si = vec2(ceil(clamp(blur / scale * 3.0, 2.0, clamp(float(params.max_taps), 2.0, 16.0)))), sio = si + vec2(1.0);
         for (float sy = 0.0; sy < sio.y; sy += 1.0) {
