@@ -13,13 +13,13 @@ secs=${1:-300}; shift $(( $# > 0 ? 1 : 0 ))
 cmake --preset fuzz -G Ninja > /dev/null
 for t in "$@"; do cmake --build build/fuzz --target "fuzz_$t" -j "$(nproc)"; done
 out=build/fuzz/campaign; mkdir -p "$out"
-seeds() {  # the same seed folders as the ctest replay (tests/fuzz/CMakeLists.txt)
-  case $1 in
-    preset) find presets tests/bad tests/graphs -type f -name '*.toml' ;;
-    glsl) find passes presets tests/bad -type f \( -name '*.glsl' -o -name '*.frag' -o -name '*.comp' -o -name '*.vert' \) ;;
-    import) find tests/import -type f \( -name '*.json' -o -name '*.glsl' -o -name '*.fs' \) ;;
-    mesh) find presets tests -type f \( -name '*.obj' -o -name '*.gltf' \) -size -2M ;;
-  esac
+seeds() {  # tests/fuzz/seeds.txt, as the ctest replay reads it: every extension in every folder
+  dirs=$(awk -v t="$1" '$1 == t { print $2 }' tests/fuzz/seeds.txt | sort -u)
+  exts=$(awk -v t="$1" '$1 == t { print $3 }' tests/fuzz/seeds.txt | sort -u)
+  set --
+  for e in $exts; do [ $# = 0 ] || set -- "$@" -o; set -- "$@" -name "*$e"; done
+  # shellcheck disable=SC2086
+  find $dirs -type f \( "$@" \) -size -2M
 }
 status=0
 for t in "$@"; do
