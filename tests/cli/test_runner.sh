@@ -18,11 +18,15 @@ expect_rc() { # expect_rc CODE LOG CMD...: runs CMD, output into LOG, and checks
 }
 src=presets/fundamentals/fullscreen-pass
 # Two presets with the same folder name in different places, one of them broken (its golden no
-# longer matches), and a preset without [[test]].
+# longer matches), and a preset without [[test]]. The copies keep the source's first two cases
+# (`default`, `each-pixel-once`), so the counts below do not move when the preset gains cases.
+keep_two_cases() { awk '/^\[\[test\]\]/ { ++n } n <= 2' "$1" > "$1.tmp" && mv "$1.tmp" "$1"; }
 mkdir -p "$work/a" "$work/b"
 cp -r "$src" "$work/a/fsp"; cp -r "$src" "$work/b/fsp"
-sed -i 's/vec4(/vec4(0.1 + /' "$work/b/fsp/"*.frag
-mkdir "$work/none"; sed '/^\[\[test\]\]/,$d' "$src/preset.toml" > "$work/none/preset.toml"; cp "$src"/*.frag "$work/none/"
+keep_two_cases "$work/a/fsp/preset.toml"; keep_two_cases "$work/b/fsp/preset.toml"
+sed -i 's/vec4(/vec4(0.1 + /' "$work/b/fsp/display.frag"
+mkdir "$work/none"; sed '/^\[\[test\]\]/,$d' "$src/preset.toml" > "$work/none/preset.toml"
+cp "$src"/*.frag "$src"/*.vert "$work/none/"
 cd "$work"
 
 # 1. No [[test]], or a filter that selects nothing: say so, exit 1.
