@@ -96,6 +96,7 @@ SizeEnv make_env(const GraphDesc& g, std::array<int, 2> view) {
     for (const auto& p : g.params) {
         env.params[p.name] = p.value[0];
         env.vectors[p.name].assign(p.value.begin(), p.value.begin() + p.components());
+        if (!p.options.empty()) env.options[p.name] = p.options;
     }
     return env;
 }

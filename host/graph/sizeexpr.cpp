@@ -38,7 +38,7 @@ class Evaluator {
         if (i_ < s_.size()) {
             if (s_[i_] == ')') return fail("unbalanced ')'", i_);
             if (std::isdigit(static_cast<unsigned char>(s_[i_])) || std::isalpha(static_cast<unsigned char>(s_[i_])))
-                return fail("expected an operator (+ - * / %) before '" + word_at(i_) + "'", i_);
+                return fail("expected an operator (+ - * / % or a comparison) before '" + word_at(i_) + "'", i_);
             return fail("unexpected '" + std::string(1, s_[i_]) + "'", i_);
         }
         return *v;
@@ -157,7 +157,82 @@ class Evaluator {
         return r;
     }
 
+    // The loosest level: one optional comparison, 1 if it holds and 0 if not, per component.
+    // Comparisons do not chain ("a < b < c" is an error, not the (a < b) < c that C reads), and
+    // an enum param compares with an option's quoted name: "params.show == 'taa'".
     std::optional<Vec> expr() {
+        ws();
+        const size_t left_at = i_;
+        auto a = sum();
+        if (!a) return a;
+        ws();
+        const size_t op_at = i_;
+        const std::string op = comparison_at(i_);
+        if (op.empty()) {
+            if (i_ < s_.size() && s_[i_] == '=') return set(fail("'=' is not an operator: compare with ==", i_));
+            return a;
+        }
+        i_ += op.size();
+        ws();
+        const size_t at = i_;
+        std::optional<Vec> b;
+        if (i_ < s_.size() && (s_[i_] == '\'' || s_[i_] == '"')) b = option_index(trimmed(left_at, op_at), at);
+        else b = sum();
+        if (!b) return b;
+        if (a->size() != 1 && b->size() != 1 && a->size() != b->size())
+            return set(fail("cannot compare a " + std::to_string(a->size()) + "-vector with a " + std::to_string(b->size()) + "-vector",
+                            op_at));
+        Vec r(std::max(a->size(), b->size()));
+        for (size_t k = 0; k < r.size(); ++k) {
+            T x = a->size() == 1 ? (*a)[0] : (*a)[k], y = b->size() == 1 ? (*b)[0] : (*b)[k];
+            bool holds = op == "==" ? x == y : op == "!=" ? x != y : op == "<" ? x < y : op == "<=" ? x <= y : op == ">" ? x > y : x >= y;
+            r[k] = holds ? T(1) : T(0);
+        }
+        ws();
+        if (!comparison_at(i_).empty())
+            return set(fail("comparisons do not chain: write \"a < b\" and \"b < c\" as a product, (a < b) * (b < c)", i_));
+        return r;
+    }
+
+    // The comparison operator at `at`, or "" (two-character operators first).
+    std::string comparison_at(size_t at) const {
+        if (at >= s_.size()) return "";
+        if (at + 1 < s_.size() && s_[at + 1] == '=' && (s_[at] == '=' || s_[at] == '!' || s_[at] == '<' || s_[at] == '>'))
+            return s_.substr(at, 2);
+        if (s_[at] == '<' || s_[at] == '>') return std::string(1, s_[at]);
+        return "";
+    }
+
+    std::string trimmed(size_t from, size_t to) const {
+        while (from < to && std::isspace(static_cast<unsigned char>(s_[from]))) ++from;
+        while (to > from && std::isspace(static_cast<unsigned char>(s_[to - 1]))) --to;
+        return s_.substr(from, to - from);
+    }
+
+    // 'option' (or "option") after `left`, which must name an enum param: the option's index.
+    std::optional<Vec> option_index(const std::string& left, size_t at) {
+        const char quote = s_[i_++];
+        const size_t end = s_.find(quote, i_);
+        if (end == std::string::npos) return set(fail("the quoted name has no closing " + std::string(1, quote), at));
+        const std::string name = s_.substr(i_, end - i_);
+        i_ = end + 1;
+        auto p = left.rfind("params.", 0) == 0 ? env_.options.find(left.substr(7)) : env_.options.end();
+        if (p == env_.options.end()) {
+            Error e = fail("a quoted name compares with an enum param, as in \"params.mode == 'fast'\"; '" + left + "' is not one", at);
+            std::vector<std::string> enums;
+            for (const auto& [k, v] : env_.options) enums.push_back("params." + k);
+            if (!enums.empty()) suggest(e, left, enums, "enum params");
+            return set(std::move(e));
+        }
+        const auto& opts = p->second;
+        for (size_t k = 0; k < opts.size(); ++k)
+            if (opts[k] == name) return Vec{T(static_cast<int64_t>(k))};
+        Error e = fail("'" + name + "' is not an option of " + left, at + 1);
+        suggest(e, name, opts, "options");
+        return set(std::move(e));
+    }
+
+    std::optional<Vec> sum() {
         auto a = term();
         while (a) {
             ws();
@@ -303,6 +378,8 @@ class Evaluator {
             suggest(e, id, names, "names");
             return set(std::move(e));
         }
+        if (c == '\'' || c == '"')
+            return set(fail("a quoted option name goes right of a comparison with an enum param: \"params.mode == 'fast'\"", at));
         return set(fail("unexpected '" + std::string(1, c) + "'", at));
     }
 

@@ -1,7 +1,10 @@
 // Size expressions: "view", "view/2", "view.w*view.h*4", "ceil_div(view, 8)", [w,h], 256.
 // Values are integer vectors of 1-3 components; `view` is the 2-vector (w, h); scalars
 // broadcast; + - * / % and unary minus with the usual precedence; / and % floor (so that
-// a == (a / b) * b + a % b for negative values too); min, max and ceil_div take two arguments,
+// a == (a / b) * b + a % b for negative values too); comparisons == != < <= > >= bind loosest and
+// give 1 or 0 (a vector compares per component), and an enum param compares with an option's
+// name in quotes, "params.show == 'taa'", so `enabled` needs no arithmetic on option indices;
+// min, max and ceil_div take two arguments,
 // log2 one (floor(log2(x)) for x >= 1, so "log2(max(view.w, view.h))" counts the halvings of a
 // full mip chain).
 // Errors point at the offending token: the SizeExpr's loc is the start of the TOML value (the
@@ -24,6 +27,7 @@ struct SizeEnv {
     // `group_iteration` in a pass's mip/layer selections (exec/views.cpp).
     std::map<std::string, int64_t> locals;
     std::map<std::string, std::vector<double>> vectors;  // float expressions: every component
+    std::map<std::string, std::vector<std::string>> options;  // enum params: option names, by index
 };
 
 struct Extent {

@@ -27,6 +27,8 @@ SizeEnv env() {
     e.params["taps"] = 5;
     e.params["spread"] = 2.9;
     e.params["neg"] = -2.9;
+    e.params["show"] = 2;  // an enum at its third option
+    e.options["show"] = {"lit", "count", "slices", "taa"};
     return e;
 }
 
@@ -182,6 +184,54 @@ TEST(SizeExpr, SyntaxErrorsPointAtTheToken) {
     }
     SizeExpr empty = text("   ");
     EXPECT_FALSE(eval_size(empty, env()));
+}
+
+TEST(SizeExpr, ComparisonsGiveOneOrZero) {
+    EXPECT_EQ(eval("params.taps == 5"), (V{1}));
+    EXPECT_EQ(eval("params.taps != 5"), (V{0}));
+    EXPECT_EQ(eval("params.taps < 5"), (V{0}));
+    EXPECT_EQ(eval("params.taps <= 5"), (V{1}));
+    EXPECT_EQ(eval("params.taps > 4"), (V{1}));
+    EXPECT_EQ(eval("params.taps >= 6"), (V{0}));
+    EXPECT_EQ(eval("view.w / 2 == 320"), (V{1}));           // arithmetic binds tighter
+    EXPECT_EQ(eval("(params.taps == 5) * 7 + 1"), (V{8}));  // a comparison in parentheses is a value
+    EXPECT_EQ(eval("view == 640"), (V{1, 0}));              // per component, scalars broadcast
+    EXPECT_EQ(eval("min(params.taps > 1, 1)"), (V{1}));
+}
+
+TEST(SizeExpr, EnumParamsCompareWithOptionNames) {
+    EXPECT_EQ(eval("params.show == 'slices'"), (V{1}));
+    EXPECT_EQ(eval("params.show == \"slices\""), (V{1}));  // either quote, for TOML's two string kinds
+    EXPECT_EQ(eval("params.show == 'lit'"), (V{0}));
+    EXPECT_EQ(eval("params.show != 'taa'"), (V{1}));
+    EXPECT_EQ(eval("params.show >= 'count'"), (V{1}));  // option order
+    EXPECT_EQ(eval("(params.show == 'lit') + (params.show == 'slices')"), (V{1}));
+
+    auto typo = eval_size(text("params.show == 'slice'"), env());
+    ASSERT_FALSE(typo);
+    EXPECT_NE(typo.error().message.find("'slice' is not an option of params.show"), std::string::npos) << typo.error().message;
+    EXPECT_EQ(typo.error().hint, "did you mean 'slices'?");
+    EXPECT_EQ(typo.error().loc.col, col_of(16));  // inside the quotes
+
+    auto not_enum = eval_size(text("params.taps == 'five'"), env());
+    ASSERT_FALSE(not_enum);
+    EXPECT_NE(not_enum.error().message.find("'params.taps' is not one"), std::string::npos) << not_enum.error().message;
+    EXPECT_EQ(not_enum.error().loc.col, col_of(15));
+}
+
+TEST(SizeExpr, ComparisonErrorsPointAtTheToken) {
+    struct Case {
+        const char* text;
+        size_t offset;
+        const char* says;
+    };
+    for (const Case& c : {Case{"params.taps = 5", 12, "compare with =="}, Case{"1 < params.taps < 9", 16, "do not chain"},
+                          Case{"'lit' == params.show", 0, "right of a comparison"}, Case{"params.show == 'lit", 15, "no closing"}}) {
+        auto r = eval_size(text(c.text), env());
+        ASSERT_FALSE(r) << c.text;
+        EXPECT_NE(r.error().message.find(c.says), std::string::npos) << c.text << ": " << r.error().message;
+        EXPECT_EQ(r.error().loc.col, col_of(c.offset)) << c.text << ": " << r.error().message;
+    }
 }
 
 TEST(SizeExpr, NamesForMessages) {
