@@ -172,13 +172,13 @@ void viewer_section(LabState& s, const exec::Executor& ex) {
                         gi.desc ? gi.desc->format.c_str() : "");
 }
 
-// The viewer fills the window: the texel under the cursor, with its float value, as a tooltip.
+// The viewer fills the view: the texel under the cursor, with its float value, as a tooltip.
 void viewer_hover(const LabState& s, const ViewerTexture& v) {
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantCaptureMouse) return;
     float fx = io.DisplayFramebufferScale.x, fy = io.DisplayFramebufferScale.y;
-    FitRect r = fit_rect(v.width(), v.height(), static_cast<int>(io.DisplaySize.x * fx), static_cast<int>(io.DisplaySize.y * fy));
-    int x = static_cast<int>((io.MousePos.x * fx - r.x) / r.scale), y = static_cast<int>((io.MousePos.y * fy - r.y) / r.scale);
+    FitRect r = fit_rect(v.width(), v.height(), static_cast<int>(io.DisplaySize.x * fx) - s.dock_px, static_cast<int>(io.DisplaySize.y * fy));
+    int x = static_cast<int>((io.MousePos.x * fx - s.dock_px - r.x) / r.scale), y = static_cast<int>((io.MousePos.y * fy - r.y) / r.scale);
     const image::Image& px = s.viewer_pixels;
     if (x < 0 || y < 0 || x >= px.width || y >= px.height) return;
     const float* c = px.at(x, y);
@@ -233,9 +233,13 @@ void draw_panel(LabState& s, exec::Executor& ex, const ViewerTexture* viewer, co
     if (s.error) error_overlay(*s.error);
     if (s.show_help) help_window(s);
     if (!s.show_ui) return;
-    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
-    ImGui::Begin("passlab");
+    // Docked: the full height of the window's left strip, which run.cpp keeps out of the view.
+    // It never comes to the front, so the error overlay stays drawn above it.
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(static_cast<float>(s.dock_px) / io.DisplayFramebufferScale.x, io.DisplaySize.y), ImGuiCond_Always);
+    ImGui::Begin("passlab", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus);
     ImGui::TextDisabled("%s", preset.c_str());
     if (ImGui::CollapsingHeader("Params", ImGuiTreeNodeFlags_DefaultOpen)) params_section(s, ex, preset);
     if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) time_section(s);

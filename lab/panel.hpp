@@ -15,6 +15,10 @@
 
 namespace pl::lab {
 
+// The panel is docked left of the view, this wide in screen units at content scale 1: the window
+// grows by it (the view keeps its size), so the panel never covers the picture.
+constexpr float kPanelWidth = 360.0f;
+
 struct LabState {
     // Frame clock.
     bool paused = false;
@@ -23,6 +27,7 @@ struct LabState {
     float speed = 1.0f;
     // Panels.
     bool show_ui = true, show_help = false, show_viewer = false;
+    int dock_px = 0;  // the docked panel's width in framebuffer pixels (0 while hidden): the view starts there
     std::deque<float> frame_ms;  // CPU time per frame, newest last
     std::optional<Error> error;  // the last failed reload; cleared by a good one
     // Image viewer.

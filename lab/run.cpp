@@ -165,7 +165,8 @@ int run(const RunOptions& o, const CommonOptions& c) {
                                                        : VK_PRESENT_MODE_FIFO_KHR;
     const std::string preset_name = fs::proximate(toml.parent_path()).string();
     const std::string title = "passlab — " + preset_name;
-    auto window = Window::create(**ctx, built->view[0], built->view[1], title, mode);
+    // The panel docks beside the view: the window is the view plus the panel's strip.
+    auto window = Window::create(**ctx, built->view[0] + (o.ui ? static_cast<int>(kPanelWidth) : 0), built->view[1], title, mode);
     if (!window) return report(window.error());
     auto overlay = Overlay::create(**ctx, **window);
     if (!overlay) return report(overlay.error());
@@ -211,6 +212,21 @@ int run(const RunOptions& o, const CommonOptions& c) {
     LabState st;
     st.time = o.time;
     st.show_ui = o.ui;
+    // The panel's strip in framebuffer pixels (HiDPI: scaled like the window; larger with the
+    // UI's content scale); the view is the rest of the framebuffer.
+    auto dock_px = [&] {
+        if (!st.show_ui) return 0;
+        int ww = 0, wh = 0;
+        glfwGetWindowSize((*window)->handle(), &ww, &wh);
+        const auto fb = (*window)->framebuffer_size();
+        const double fb_per_unit = ww > 0 ? double(fb[0]) / ww : 1.0;
+        return static_cast<int>(std::lround(kPanelWidth * (*window)->content_scale() * fb_per_unit));
+    };
+    auto view_size = [&]() -> std::array<int, 2> {
+        const auto fb = (*window)->framebuffer_size();
+        return {fb[0] - st.dock_px, fb[1]};
+    };
+    st.dock_px = dock_px();
     st.show_viewer = !o.inspect.empty();
     st.viewer_image = o.inspect;
     const fs::path sidecar = exec::sidecar_path(toml);
@@ -246,7 +262,9 @@ int run(const RunOptions& o, const CommonOptions& c) {
             if (input.left) {
                 const bool click_frame = mouse.z <= 0.0f || mouse.z != static_cast<float>(input.click_x) ||
                                          std::fabs(mouse.w) != static_cast<float>(input.click_y);
-                mouse = glm::vec4(input.x, input.y, input.click_x, click_frame ? input.click_y : -input.click_y);
+                // In the view's pixels: the docked panel's strip is not part of the view.
+                const double x = input.x - st.dock_px, cx = input.click_x - st.dock_px;
+                mouse = glm::vec4(x, input.y, cx, click_frame ? input.click_y : -input.click_y);
             }
         }
         if (!input.left) mouse = glm::vec4(mouse.x, mouse.y, -std::fabs(mouse.z), -std::fabs(mouse.w));
@@ -254,7 +272,15 @@ int run(const RunOptions& o, const CommonOptions& c) {
             if (input.pause_toggled) st.paused = !st.paused;
             if (input.step) st.step = true;
             if (input.screenshot) st.screenshot = true;
-            if (input.toggle_ui) st.show_ui = !st.show_ui;
+            if (input.toggle_ui) {
+                // The window shrinks or grows by the panel's strip, so the view keeps its size
+                // (where the window manager refuses, the view is rebuilt at what is left).
+                int ww = 0, wh = 0;
+                glfwGetWindowSize((*window)->handle(), &ww, &wh);
+                const int strip = static_cast<int>(std::lround(kPanelWidth * (*window)->content_scale()));
+                st.show_ui = !st.show_ui;
+                glfwSetWindowSize((*window)->handle(), std::max(1, ww + (st.show_ui ? strip : -strip)), wh);
+            }
             if (input.toggle_help) st.show_help = !st.show_help;
         }
         double delta = st.paused ? (st.step ? 1.0 / 60.0 : 0.0) : dt * st.speed;
@@ -264,9 +290,12 @@ int run(const RunOptions& o, const CommonOptions& c) {
         // Resize: once the framebuffer size has settled, rebuild at that size; images sized from
         // the view are recreated (history restarts), the others keep their contents.
         // (Each size is built once: a size that fails to build is not retried every frame.)
-        if (auto fb = (*window)->framebuffer_size(); fb[0] > 0 && fb[1] > 0 && fb != built_size && fb != pending_size) {
-            pending_size = fb;
-            resize_at = now + std::chrono::milliseconds(150);
+        // Tab resizes the window by the panel's strip: until the window follows, the view looks
+        // a strip smaller or larger; once it is back at the built size nothing is rebuilt.
+        st.dock_px = dock_px();
+        if (auto vs = view_size(); vs[0] > 0 && vs[1] > 0) {
+            if (vs == built_size) pending_size = {0, 0};
+            else if (vs != pending_size) pending_size = vs, resize_at = now + std::chrono::milliseconds(150);
         }
         if (pending_size[0] > 0 && now >= resize_at && !reload.busy()) {
             built_size = pending_size;
@@ -377,8 +406,10 @@ int run(const RunOptions& o, const CommonOptions& c) {
         if (!o.capture.empty() && o.frames > 0 && frame == o.frames - 1) (*window)->capture_next(o.capture);
         Window::Recorders rec;
         rec.blit = [&](VkCommandBuffer cb, VkImage dst, VkExtent2D ext) {
-            if (!st.show_viewer || !viewer->ready()) return current->record_blit_to(cb, output, dst, ext);
-            viewer->record_blit(cb, dst, ext);
+            const int dock = std::min(st.dock_px, static_cast<int>(ext.width) - 1);
+            const VkRect2D view{{dock, 0}, {ext.width - static_cast<uint32_t>(dock), ext.height}};
+            if (!st.show_viewer || !viewer->ready()) return current->record_blit_to(cb, output, dst, view);
+            viewer->record_blit(cb, dst, view);
             return ok_status();
         };
         rec.overlay = [&](VkCommandBuffer cb) { (*overlay)->record(cb); };

@@ -67,7 +67,7 @@ void ViewerTexture::barrier(VkCommandBuffer cb, VkImageLayout to, VkPipelineStag
     layout_state_ = to;
 }
 
-void ViewerTexture::record_blit(VkCommandBuffer cb, VkImage dst, VkExtent2D ext) {
+void ViewerTexture::record_blit(VkCommandBuffer cb, VkImage dst, VkRect2D to) {
     constexpr auto transfer = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
     if (pending_) {
         barrier(cb, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, transfer, 0, transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT);
@@ -79,14 +79,14 @@ void ViewerTexture::record_blit(VkCommandBuffer cb, VkImage dst, VkExtent2D ext)
     }
     if (!uploaded_) return;
     barrier(cb, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT, transfer, VK_ACCESS_2_TRANSFER_READ_BIT);
-    FitRect r = fit_rect(width_, height_, static_cast<int>(ext.width), static_cast<int>(ext.height));
-    auto x0 = static_cast<int32_t>(r.x), y0 = static_cast<int32_t>(r.y);
+    FitRect r = fit_rect(width_, height_, static_cast<int>(to.extent.width), static_cast<int>(to.extent.height));
+    auto x0 = to.offset.x + static_cast<int32_t>(r.x), y0 = to.offset.y + static_cast<int32_t>(r.y);
     VkImageBlit blit{.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                      .srcOffsets = {{0, 0, 0}, {width_, height_, 1}},
                      .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                      .dstOffsets = {{x0, y0, 0},
-                                    {std::max(x0 + 1, static_cast<int32_t>(r.x + width_ * r.scale)),
-                                     std::max(y0 + 1, static_cast<int32_t>(r.y + height_ * r.scale)), 1}}};
+                                    {std::max(x0 + 1, to.offset.x + static_cast<int32_t>(r.x + width_ * r.scale)),
+                                     std::max(y0 + 1, to.offset.y + static_cast<int32_t>(r.y + height_ * r.scale)), 1}}};
     vkCmdBlitImage(cb, image_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit,
                    VK_FILTER_NEAREST);
 }

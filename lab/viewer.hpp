@@ -1,7 +1,6 @@
 // The image viewer: any graph image (a mip, a layer or cube face), read back as float, mapped
 // for display on the CPU (channel isolation, exposure, sRGB encoding), uploaded into an RGBA8
-// image and blitted over the whole window in place of the preset's output (the panel stays on
-// top). CPU mapping keeps the graph untouched: viewing an image adds no pass and no pipeline to
+// image and blitted over the view in place of the preset's output. CPU mapping keeps the graph untouched: viewing an image adds no pass and no pipeline to
 // the preset. (Dear ImGui 1.86's Vulkan backend cannot draw user textures, hence the blit.)
 #pragma once
 
@@ -30,9 +29,9 @@ class ViewerTexture {
 
     // Maps `src` into the staging buffer; the next record_blit uploads it first.
     void update(const image::Image& src, const ViewerMapping& m);
-    // Records the pending upload and a blit into `dst` (TRANSFER_DST, already cleared), fitted
-    // with nearest filtering so magnified texels stay squares.
-    void record_blit(VkCommandBuffer cb, VkImage dst, VkExtent2D dst_extent);
+    // Records the pending upload and a blit into the rectangle `to` of `dst` (TRANSFER_DST,
+    // already cleared), fitted with nearest filtering so magnified texels stay squares.
+    void record_blit(VkCommandBuffer cb, VkImage dst, VkRect2D to);
     bool ready() const { return uploaded_ || pending_; }
     int width() const { return width_; }
     int height() const { return height_; }

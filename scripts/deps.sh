@@ -12,7 +12,7 @@ PACKAGES=(
   libtomlplusplus-dev libimgui-dev libcli11-dev
   libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth
+  xvfb xauth xdotool   # the live tests run the window under Xvfb and press its keys
   graphviz
   python3
 )

@@ -76,9 +76,10 @@ class Executor {
     // Every declared counter, read after each frame (a 4-byte copy each, no full readback).
     const std::vector<CounterReading>& counters() const { return counters_; }
 
-    // Records a blit of `image` (its current contents) into `dst`, which the caller has put in
-    // TRANSFER_DST_OPTIMAL; the source's transition comes from the planner. For presenting.
-    Status record_blit_to(VkCommandBuffer cb, const std::string& image, VkImage dst, VkExtent2D dst_extent);
+    // Records a blit of `image` (its current contents) into the rectangle `to` of `dst`, which
+    // the caller has put in TRANSFER_DST_OPTIMAL; the source's transition comes from the
+    // planner. For presenting (the live lab's view sits beside its docked panel).
+    Status record_blit_to(VkCommandBuffer cb, const std::string& image, VkImage dst, VkRect2D to);
     // Whether record_blit_to can show `image` (single-sampled colour, a blittable float/unorm
     // format); the live lab checks this when a graph is built, so a bad [output] is a reload error.
     Status check_showable(const std::string& image) const;

@@ -515,7 +515,7 @@ Status Executor::check_showable(const std::string& name) const {
     return e;
 }
 
-Status Executor::record_blit_to(VkCommandBuffer cb, const std::string& name, VkImage dst, VkExtent2D ext) {
+Status Executor::record_blit_to(VkCommandBuffer cb, const std::string& name, VkImage dst, VkRect2D to) {
     if (auto s = check_showable(name); !s) return s;
     auto it = res_.images.find(name);
     PhysImage* p = it->second.phys[last_parity()].get();
@@ -531,7 +531,8 @@ Status Executor::record_blit_to(VkCommandBuffer cb, const std::string& name, VkI
     VkImageBlit b{.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                   .srcOffsets = {{0, 0, 0}, {static_cast<int32_t>(info.extent.width), static_cast<int32_t>(info.extent.height), 1}},
                   .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-                  .dstOffsets = {{0, 0, 0}, {static_cast<int32_t>(ext.width), static_cast<int32_t>(ext.height), 1}}};
+                  .dstOffsets = {{to.offset.x, to.offset.y, 0},
+                                 {to.offset.x + static_cast<int32_t>(to.extent.width), to.offset.y + static_cast<int32_t>(to.extent.height), 1}}};
     vkCmdBlitImage(cb, p->image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &b,
                    filter);
     return ok_status();

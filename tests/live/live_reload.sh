@@ -87,9 +87,14 @@ oks=$(grep '"reload-ok"' "$ev")
 [ "$(echo "$oks" | sed -n 3p | grep -o '"rebuilt":\[[^]]*\]')" = '"rebuilt":["main"]' ] || fail "the include edit did not rebuild exactly main"
 [ "$(echo "$oks" | sed -n 4p | grep -o '"rebuilt":\[[^]]*\]')" = '"rebuilt":[]' ] || fail "the param edit rebuilt a pipeline"
 
-# The window with its panel, saved by --capture: a PNG of the window's size.
-xvfb-run -a -s "-screen 0 640x480x24" "$passlab" run "$p" --size 320x200 --frames 3 --capture "$work/ui.png" > "$work/capture.log" 2>&1 ||
+# The window with its panel, saved by --capture: a PNG of the window's size, the panel docked
+# in a 360-pixel strip left of the 320x200 view (the window grows by the strip). The view must
+# show the whole picture, uncovered: the capture's right 320x200 equals a headless render.
+xvfb-run -a -s "-screen 0 800x480x24" "$passlab" run "$p" --size 320x200 --frames 3 --capture "$work/ui.png" > "$work/capture.log" 2>&1 ||
   fail "run --capture failed: $(cat "$work/capture.log")"
-[ "$(od -An -tx1 -j16 -N8 "$work/ui.png" | tr -d ' \n')" = "00000140000000c8" ] || fail "the capture is not a 320x200 PNG"
+[ "$(od -An -tx1 -j16 -N8 "$work/ui.png" | tr -d ' \n')" = "000002a8000000c8" ] || fail "the capture is not a 680x200 PNG (360 panel + 320 view)"
+"$passlab" render "$p" --size 320x200 --set gain=0.75 -o "$work/headless" > "$work/headless.log" 2>&1 || fail "render failed: $(cat "$work/headless.log")"
+python3 "$here/png_region.py" "$work/ui.png" "$(ls "$work"/headless/*.png | head -1)" 360 0 ||
+  fail "the view in the window is not the rendered picture (covered by the panel, or offset)"
 grep -q 'undefined_name' "$work/run.log" || fail "the terminal did not show the error"
 echo "live reload: $(grep -c reload-ok "$ev") reloads ok, $(grep -c reload-failed "$ev") failed as expected, $(grep -c frame-presented "$ev") frames presented"
