@@ -58,24 +58,39 @@ void main() {
     // pixels on average, with the pattern turned into fine noise.
     float angle = stride > 1 ? 6.28318530718 * hash_pcg(vec3(px, 0.0)) : 0.0;
     mat2 rot = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
+    // Per-receiver constants of the loop below: a sample's pixel side is its view depth times
+    // this (2 z / (|P11| height), times stride), and the disk radius factor disk_scale^2.
+    float side_per_depth = float(stride) * 2.0 / (abs(frame.proj[1][1]) * frame.resolution.y);
+    float scale2 = params.disk_scale * params.disk_scale;
     float occlusion = 0.0;
-    for (int y = -reach; y <= reach; y += stride)
-        for (int x = -reach; x <= reach; x += stride) {
-            if ((x == 0 && y == 0) || x * x + y * y > reach * reach) continue;
+    for (int y = -reach; y <= reach; y += stride) {
+        // Only the grid points inside the disk x^2 + y^2 <= reach^2: this row's half-width,
+        // the largest multiple of stride not past sqrt(reach^2 - y^2) (the float root, then
+        // corrected by one step either way in integers), instead of the whole square.
+        int r2 = reach * reach - y * y;
+        int span = int(sqrt(float(r2))) / stride * stride;
+        if ((span + stride) * (span + stride) <= r2) span += stride;
+        if (span * span > r2) span -= stride;
+        for (int x = -span; x <= span; x += stride) {
+            if (x == 0 && y == 0) continue;
             ivec2 q_px = px + ivec2(round(rot * vec2(x, y)));
             if (any(lessThan(q_px, ivec2(0))) || any(greaterThanEqual(q_px, size))) continue;
-            vec4 qn = texelFetch(normal, q_px, 0);
-            if (qn.w == 0.0) continue;
-            vec3 q = texelFetch(vpos, q_px, 0).xyz, pq = q - p;
-            float d = length(pq), h = dot(n, pq);
+            // vpos.w is 1 on geometry, 0 on the cleared background; the sample's normal is
+            // fetched only once it lies within R and above the tangent plane.
+            vec4 qw = texelFetch(vpos, q_px, 0);
+            if (qw.w == 0.0) continue;
+            vec3 q = qw.xyz, pq = q - p;
+            float d2 = dot(pq, pq), inv_d = inversesqrt(d2), d = d2 * inv_d, h = dot(n, pq);
             if (d >= params.radius || h <= 0.0) continue;
-            float pixel = float(stride) * 2.0 * -q.z / (abs(frame.proj[1][1]) * frame.resolution.y);
-            float facing = max(abs(dot(normalize(qn.xyz), normalize(-q))), kMinCos);
-            float area = pixel * pixel / facing * params.disk_scale * params.disk_scale;  // F_i
-            float w = params.disk_model == DISK_MODEL_CAP ? 2.0 * kPi * (1.0 - d / sqrt(d * d + area / kPi))
-                                                          : area / (d * d);
-            if (params.orientation == ORIENTATION_NORMAL) w *= abs(dot(normalize(qn.xyz), pq)) / d;
-            occlusion += w * h / d;
+            vec3 nq = normalize(texelFetch(normal, q_px, 0).xyz);
+            float pixel = side_per_depth * -q.z;
+            float facing = max(abs(dot(nq, q)) * inversesqrt(dot(q, q)), kMinCos);  // |n_q . view|
+            float area = pixel * pixel / facing * scale2;  // F_i
+            float w = params.disk_model == DISK_MODEL_CAP ? 2.0 * kPi * (1.0 - d * inversesqrt(d2 + area / kPi))
+                                                          : area / d2;
+            if (params.orientation == ORIENTATION_NORMAL) w *= abs(dot(nq, pq)) * inv_d;
+            occlusion += w * h * inv_d;
         }
+    }
     ao = 1.0 - min(occlusion / kPi, 1.0);
 }

@@ -15,6 +15,7 @@ layout(location = 0) in vec2 uv;
 layout(location = 0) out float ao_raw;
 uniform sampler2D normal;
 uniform sampler2D vpos;
+uniform sampler2D vz;  // view z alone, 0 on the background
 
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
@@ -28,6 +29,7 @@ void main() {
     ivec2 tile = px % 4;
     float turn = 6.2831853 * float(tile.x + 4 * tile.y) / 16.0;
     mat3 spin = mat3(cos(turn), sin(turn), 0, -sin(turn), cos(turn), 0, 0, 0, 1);
+    mat3 to_view = basis * spin;  // spin about n, then the hemisphere's frame to view space
     float visible = 0.0, total = 0.0;
     for (int i = 0; i < params.samples; ++i) {
         vec3 h = hash_pcg3(vec3(float(i), 71.0, 13.0));
@@ -35,7 +37,7 @@ void main() {
         float cos_t = h.x, sin_t = sqrt(1.0 - cos_t * cos_t), phi = 6.2831853 * h.y;
         vec3 w = vec3(sin_t * cos(phi), sin_t * sin(phi), cos_t);
         float len = params.radius * mix(0.1, 1.0, h.z);
-        vec3 s = p + basis * (spin * w) * len;
+        vec3 s = p + to_view * w * len;
         vec4 clip = frame.proj * vec4(s, 1.0);
         vec2 suv = clip.xy / clip.w * 0.5 + 0.5;
         float weight = cos_t;  // n . w_i
@@ -44,10 +46,13 @@ void main() {
             visible += weight;  // off screen: no information, count as open
             continue;
         }
-        vec4 scene = texelFetch(vpos, ivec2(suv * frame.resolution.xy), 0);
-        bool has_surface = texelFetch(normal, ivec2(suv * frame.resolution.xy), 0).w != 0.0;
+        // The test needs only the depth of the surface there: `vz` holds vpos.z alone (4 bytes
+        // a texel instead of 16, so the scattered fetches stay in cache), and 0 where the clear
+        // left the background (geometry in front of the eye has z < 0): one fetch tells both.
+        float scene_z = texelFetch(vz, ivec2(suv * frame.resolution.xy), 0).r;
+        bool has_surface = scene_z != 0.0;
         // View space looks down -z: larger z is closer to the eye.
-        bool hidden = has_surface && scene.z >= s.z + params.bias && abs(p.z - scene.z) < 2.0 * params.radius;
+        bool hidden = has_surface && scene_z >= s.z + params.bias && abs(p.z - scene_z) < 2.0 * params.radius;
         if (!hidden) visible += weight;
     }
     ao_raw = visible / max(total, 1e-6);
