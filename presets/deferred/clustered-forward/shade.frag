@@ -7,13 +7,14 @@
 // glass pane in front of the floor).
 // BRUTE_FORCE: every light instead (the reference). PANE: the glass, blended with kPaneAlpha.
 // `missing` (tests): lights reaching this fragment by more than 1/1024 but not in its list.
+// NO_STATS (the live passes): lit alone, without `missing` (a 4x MSAA rg32f target less to write).
 #include "deferred/lights.glsl"
 #include "clusters.glsl"
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;
 layout(location = 2) flat in vec4 v_material;
 layout(location = 0) out vec4 lit;
-#ifndef BRUTE_FORCE
+#if !defined(BRUTE_FORCE) && !defined(NO_STATS)
 layout(location = 1) out vec2 missing;  // x: contributing lights not listed, y: list length
 #endif
 layout(std430) readonly buffer cluster_count { uint counts[]; };
@@ -38,6 +39,7 @@ void main() {
 #else
     for (uint k = 0u; k < count; ++k)
         col += shade_point_light(point_light(int(slots[base + k]), frame.time), v_world, n, v, v_material.rgb, v_material.a, kShininess);
+#ifndef NO_STATS
     missing = vec2(0.0, float(count));
     for (int i = 0; params.verify && i < params.lights; ++i) {
         vec3 e = shade_point_light(point_light(i, frame.time), v_world, n, v, v_material.rgb, v_material.a, kShininess);
@@ -47,6 +49,7 @@ void main() {
             missing.x += listed ? 0.0 : 1.0;
         }
     }
+#endif
     if (params.show == SHOW_COUNT) col = count == 0u ? vec3(0.0) : light_count_heat(float(count) / 64.0);
     if (params.show == SHOW_SLICES) col = (0.35 + 0.65 * fract(float(cc.z) * 0.618034 + vec3(0.0, 0.33, 0.67))) * (0.3 + 0.7 * max(dot(n, normalize(vec3(0.3, 1.0, 0.2))), 0.0));
 #endif

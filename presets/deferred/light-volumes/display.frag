@@ -9,6 +9,6 @@ void main() {
         float k = float(texelFetch(count, ivec2(gl_FragCoord.xy), 0).r);
         ldr = vec4(k == 0.0 ? vec3(0.0) : mix(vec3(0.1, 0.2, 0.8), vec3(1.0, 0.15, 0.05), clamp((k - 1.0) / 7.0, 0.0, 1.0)), 1.0);
     } else {
-        ldr = vec4(clamp(texture(lit, uv).rgb, 0.0, 1.0), 1.0);
+        ldr = vec4(clamp(texelFetch(lit, ivec2(gl_FragCoord.xy), 0).rgb, 0.0, 1.0), 1.0);  // one texel, not a filtered sample
     }
 }

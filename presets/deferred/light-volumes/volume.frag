@@ -8,6 +8,8 @@
 // pass costs ~3x the plain one on lavapipe, where the depth test rejects fragments first.
 #include "deferred/lights.glsl"
 layout(location = 0) flat in int v_light;
+layout(location = 1) flat in vec4 v_sphere;  // point_light(v_light, frame.time), from volume.vert
+layout(location = 2) flat in vec3 v_color;
 layout(location = 0) out vec4 lit;
 uniform sampler2D albedo;
 uniform sampler2D normal;
@@ -27,5 +29,6 @@ void main() {
 #endif
     vec4 mat = texelFetch(albedo, px, 0);
     vec3 p = texelFetch(position, px, 0).xyz, n = normalize(nw.xyz), v = normalize(frame.camera_pos.xyz - p);
-    lit = vec4(shade_point_light(point_light(v_light, frame.time), p, n, v, mat.rgb, mat.a, kShininess), 0.0);
+    PointLight l = PointLight(v_sphere.xyz, v_color, v_sphere.w);  // = point_light(v_light, frame.time)
+    lit = vec4(shade_point_light(l, p, n, v, mat.rgb, mat.a, kShininess), 0.0);
 }
