@@ -16,6 +16,7 @@
 #include <cctype>
 #include <memory>
 #include <optional>
+#include <set>
 #include <mutex>
 #include <algorithm>
 #include <tuple>
@@ -214,8 +215,31 @@ Error parse_log(const std::string& log, Stage stage, const std::map<std::string,
     }
     Error first = errors.front();
     for (size_t i = 1; i < errors.size() && i < 10; ++i)
-        first.notes.push_back(errors[i].loc.str() + ": " + errors[i].message);
+        first.notes.push_back(errors[i].loc.str() + ": " + errors[i].message + (errors[i].hint.empty() ? "" : " (" + errors[i].hint + ")"));
     return first;
+}
+
+// `first`'s errors (without glslang's "compilation terminated") followed by those of `cascading`
+// (the same source parsed on past the first error) at file:line places `first` does not name.
+std::string merge_later_errors(const std::string& first, const std::string& cascading) {
+    auto place = [](const std::string& line) {  // "ERROR: file:line: " up to the message
+        size_t colon = line.find(": '");
+        return colon == std::string::npos ? line : line.substr(0, colon);
+    };
+    std::string out;
+    std::set<std::string> seen;
+    std::istringstream a(first), b(cascading);
+    for (std::string line; std::getline(a, line);) {
+        if (line.rfind("ERROR: ", 0) != 0 || line.find("compilation terminated") != std::string::npos ||
+            line.find("compilation errors") != std::string::npos)
+            continue;
+        seen.insert(place(line));
+        out += line + "\n";
+    }
+    for (std::string line; std::getline(b, line);)
+        if (line.rfind("ERROR: ", 0) == 0 && line.find("compilation errors") == std::string::npos && seen.insert(place(line)).second)
+            out += line + "\n";
+    return out;
 }
 
 // The line declaring the array with the most elements (`name[12345]`) among `files`; with
@@ -307,7 +331,7 @@ Result<Program> compile_program(const std::vector<StageInput>& stages, const Com
         std::vector<std::unique_ptr<glslang::TShader>> shaders;
         glslang::TProgram program;
         EShMessages msgs = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | EShMsgEnhanced);
-        for (size_t i = 0; i < stages.size(); ++i) {
+        auto make_shader = [&](size_t i) {
             auto sh = std::make_unique<glslang::TShader>(language(stages[i].stage));
             const char* src = texts[i].c_str();
             const char* name = shown_names[i].c_str();
@@ -317,8 +341,25 @@ Result<Program> compile_program(const std::vector<StageInput>& stages, const Com
             sh->setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_6);
             sh->setAutoMapBindings(true);
             sh->setAutoMapLocations(true);
-            if (!sh->parse(GetDefaultResources(), 450, false, msgs))
-                return parse_log(sh->getInfoLog(), stages[i].stage, shown_to_disk, shown_names[i], {}, texts[i]);
+            return sh;
+        };
+        for (size_t i = 0; i < stages.size(); ++i) {
+            auto sh = make_shader(i);
+            if (!sh->parse(GetDefaultResources(), 450, false, msgs)) {
+                std::string log = sh->getInfoLog();
+                // With enhanced messages glslang reports the first error only; a second parse
+                // without them, going on past errors that could cascade, finds the later
+                // mistakes too, so one reload shows them all. Only its errors on lines the first
+                // parse did not name are kept (the rest are follow-ups of the same mistake). Not
+                // after a syntax error: what a parser reports past one is mostly its own recovery.
+                if (log.find("syntax error") == std::string::npos) {
+                    auto again = make_shader(i);
+                    again->parse(GetDefaultResources(), 450, false,
+                                 static_cast<EShMessages>((msgs & ~EShMsgEnhanced) | EShMsgCascadingErrors));
+                    log = merge_later_errors(log, again->getInfoLog());
+                }
+                return parse_log(log, stages[i].stage, shown_to_disk, shown_names[i], {}, texts[i]);
+            }
             program.addShader(sh.get());
             shaders.push_back(std::move(sh));
         }

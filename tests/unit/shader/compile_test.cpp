@@ -236,3 +236,39 @@ TEST_F(ShaderTest, AFieldFarFromEveryMemberGetsOnlyTheList) {
     ASSERT_FALSE(p.error().notes.empty());
     EXPECT_EQ(p.error().notes.front(), "params has: scale");
 }
+
+// One build shows every independent mistake: the first as the error, the later ones (each once,
+// by line, with its own "did you mean") as notes; glslang's enhanced messages alone stop at one.
+TEST_F(ShaderTest, EveryIndependentErrorIsReported) {
+    auto f = write("three.frag", std::string("#version 450\n") + kOut +
+                                     "layout(set = 0, binding = 0) uniform Params { float scale; } params;\n"
+                                     "void main() {\n"
+                                     "    vec3 n = normalise(vec3(1.0));\n"
+                                     "    float s = params.scael;\n"
+                                     "    color = vec4(n * s, 1.0) + undefined_thing;\n"
+                                     "}\n");
+    auto p = frag(f);
+    ASSERT_FALSE(p.ok());
+    EXPECT_EQ(p.error().loc.line, 5) << p.error().format();
+    EXPECT_NE(p.error().message.find("'normalise'"), std::string::npos) << p.error().format();
+    std::string notes;
+    for (const auto& n : p.error().notes) notes += n + "\n";
+    EXPECT_NE(notes.find("three.frag:6:"), std::string::npos) << notes;
+    EXPECT_NE(notes.find("did you mean 'params.scale'?"), std::string::npos) << notes;
+    EXPECT_NE(notes.find("three.frag:7:"), std::string::npos) << notes;
+    EXPECT_NE(notes.find("'undefined_thing'"), std::string::npos) << notes;
+    EXPECT_EQ(notes.find("three.frag:5:"), std::string::npos) << "a follow-up of the first error is repeated:\n" << notes;
+    EXPECT_EQ(notes.find("compilation terminated"), std::string::npos) << notes;
+}
+
+// After a syntax error only that error is shown: what the parser reports past it is its recovery.
+TEST_F(ShaderTest, ASyntaxErrorIsReportedAlone) {
+    auto f = write("syntax.frag", std::string("#version 450\n") + kOut +
+                                      "void main() {\n"
+                                      "    float a = 1.0\n"
+                                      "    color = vec4(a) + undefined_thing;\n"
+                                      "}\n");
+    auto p = frag(f);
+    ASSERT_FALSE(p.ok());
+    for (const auto& n : p.error().notes) EXPECT_EQ(n.find("undefined_thing"), std::string::npos) << n;
+}
