@@ -11,11 +11,18 @@ vec3 albedo_of(int id) {
     return vec3(0.6, 0.8, 0.6);
 }
 
-vec3 rtao_shade(float v, vec3 n, int id) {
-    vec3 l = normalize(vec3(cos(radians(params.light_elevation)) * cos(radians(params.light_azimuth)),
-                            sin(radians(params.light_elevation)),
-                            cos(radians(params.light_elevation)) * sin(radians(params.light_azimuth))));
+// Towards the directional light (the same for every pixel: shade.vert computes it once per
+// vertex of the fullscreen triangle, not once per pixel).
+vec3 rtao_light_direction() {
+    return normalize(vec3(cos(radians(params.light_elevation)) * cos(radians(params.light_azimuth)),
+                          sin(radians(params.light_elevation)),
+                          cos(radians(params.light_elevation)) * sin(radians(params.light_azimuth))));
+}
+
+vec3 rtao_shade(float v, vec3 n, int id, vec3 l) {
     vec3 kd = albedo_of(id);
     return v * (params.ambient * kd + params.direct * kd * max(dot(n, l), 0.0));
 }
+
+vec3 rtao_shade(float v, vec3 n, int id) { return rtao_shade(v, n, id, rtao_light_direction()); }
 #endif

@@ -6,7 +6,9 @@
 // whose point lies on its own surface (joint bilateral upsampling: same normal, near its tangent
 // plane), so V never bleeds across a silhouette from a surface behind.
 layout(location = 0) in vec2 uv;
+layout(location = 1) flat in vec3 v_light;  // rtao_light_direction(), from shade.vert
 layout(location = 0) out vec4 hdr;
+layout(location = 1) out vec4 ldr;  // the view: hdr clamped, to sRGB (issue #21: no display pass reading hdr back)
 uniform sampler2D g_position;
 uniform sampler2D g_normal;
 uniform sampler2D ao;
@@ -37,11 +39,13 @@ void main() {
     vec4 pos = texelFetch(g_position, px, 0);
     if (pos.w == 0.0) {
         hdr = vec4(0.62, 0.7, 0.82, 1.0);  // precomputed-ao's background
+        ldr = vec4(clamp(hdr.rgb, 0.0, 1.0), 1.0);
         return;
     }
     vec4 gn = texelFetch(g_normal, px, 0);
     vec3 n = normalize(gn.xyz);
     float v = upsampled_visibility(px, pos.xyz, n);
-    vec3 c = rtao_shade(v, n, int(gn.w + 0.5));
+    vec3 c = rtao_shade(v, n, int(gn.w + 0.5), v_light);
     hdr = vec4(params.show == SHOW_AO ? vec3(v) : c, 1.0);
+    ldr = vec4(clamp(hdr.rgb, 0.0, 1.0), 1.0);
 }
