@@ -331,11 +331,16 @@ Result<Program> compile_program(const std::vector<StageInput>& stages, const Com
         std::vector<std::unique_ptr<glslang::TShader>> shaders;
         glslang::TProgram program;
         EShMessages msgs = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | EShMsgEnhanced);
+        // glslang keeps the addresses of these pointer arrays until parse(), so they live here,
+        // not in make_shader's frame.
+        std::vector<const char*> srcs, names;
+        for (size_t i = 0; i < stages.size(); ++i) {
+            srcs.push_back(texts[i].c_str());
+            names.push_back(shown_names[i].c_str());
+        }
         auto make_shader = [&](size_t i) {
             auto sh = std::make_unique<glslang::TShader>(language(stages[i].stage));
-            const char* src = texts[i].c_str();
-            const char* name = shown_names[i].c_str();
-            sh->setStringsWithLengthsAndNames(&src, nullptr, &name, 1);
+            sh->setStringsWithLengthsAndNames(&srcs[i], nullptr, &names[i], 1);
             sh->setEnvInput(glslang::EShSourceGlsl, language(stages[i].stage), glslang::EShClientVulkan, 100);
             sh->setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
             sh->setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_6);
