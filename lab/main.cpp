@@ -81,6 +81,8 @@ int main(int argc, char** argv) {
     test_cmd->add_flag("-v,--verbose", to.verbose, "Print every check, not only failures");
     test_cmd->add_option("--fail-dir", to.fail_dir, "Where actual/expected/diff images of failures go");
     test_cmd->add_option("--report", to.report_dir, "Write an HTML report with every case into this folder");
+    test_cmd->add_flag("--report-failures-only", to.report_failures_only,
+                       "The report lists failed and skipped cases only (passes are counted) and keeps no images of passes");
     add_common(test_cmd);
     add_exercise(test_cmd);
 

@@ -17,8 +17,11 @@ struct ReportEntry {
 // Writes DIR/index.html; images referenced are copied into DIR so the page is self-contained.
 // Images already inside DIR are referenced where they are; others are copied under
 // DIR/<preset folder>/. A file that cannot be written is an environment error.
+// Failures first, linked from a summary; a filter (failed / all, family); an inspector for the
+// images (zoom to texels, rendered/golden toggle, the diff's legend). `failures_only`: passing
+// cases are counted but not listed, and their renders are removed from DIR (--report-failures-only).
 Status write_report(const std::filesystem::path& dir, const std::vector<ReportEntry>& entries,
-                    const std::string& device, double total_ms);
+                    const std::string& device, double total_ms, bool failures_only = false);
 
 // Text and attribute values of HTML and XML: the five entities; control characters other than
 // tab and newline become U+FFFD.

@@ -101,6 +101,11 @@ int test(const TestOptions& o, const CommonOptions& c) {
     std::vector<std::string> args = o.targets;
     if (args.empty()) args = {exec::presets_dir().string(), (exec::presets_dir().parent_path() / "tests" / "graphs").string()};
     // Outputs are checked before anything runs: a path printed must be a file written.
+    if (o.report_failures_only && o.report_dir.empty()) {
+        Error e = make_error("--report-failures-only needs --report DIR: it says what the report lists");
+        e.code = ExitCode::usage;
+        return report(e);
+    }
     if (!o.report_dir.empty())
         if (auto s = check_output_dir(o.report_dir, "--report"); !s) return report(s.error());
     // The default fail-dir is used only when a golden fails, so a read-only cwd with passing
@@ -186,7 +191,8 @@ int test(const TestOptions& o, const CommonOptions& c) {
     }
     int rc = count(summary.entries).failed ? 1 : 0;
     if (!o.report_dir.empty()) {
-        if (auto s = write_report(o.report_dir, summary.entries, summary.device, summary.ms); !s) return report(s.error());
+        if (auto s = write_report(o.report_dir, summary.entries, summary.device, summary.ms, o.report_failures_only); !s)
+            return report(s.error());
         std::printf("report: %s\n", (fs::path(o.report_dir) / "index.html").string().c_str());
     }
     if (!o.json.empty()) {

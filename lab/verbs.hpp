@@ -45,6 +45,7 @@ struct TestOptions {
     bool verbose = false;
     std::string fail_dir = "test-failures";
     std::string report_dir;  // --report DIR: static HTML with every case
+    bool report_failures_only = false;  // --report-failures-only: list (and keep images of) failed cases only
     std::string junit;       // --junit FILE: JUnit XML
     std::string json;        // --json FILE: every case and check as JSON
     int jobs = 0;            // -j N: presets in N processes at once; 0 = default_jobs()

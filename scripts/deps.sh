@@ -18,11 +18,13 @@ PACKAGES=(
 )
 # `deps.sh --fuzz`: also clang and its libFuzzer/sanitizer runtime, for tests/fuzz/campaign.sh.
 # `deps.sh --video`: also ffmpeg, for `passlab render --video FILE.mp4|.gif`.
+# `deps.sh --browser`: also Chromium, whose headless mode the report test screenshots with.
 for arg in "$@"; do
   case "$arg" in
     --fuzz) PACKAGES+=(clang libclang-rt-14-dev) ;;
     --video) PACKAGES+=(ffmpeg) ;;
-    *) echo "deps.sh: unknown option $arg (known: --fuzz, --video)" >&2; exit 2 ;;
+    --browser) PACKAGES+=(chromium) ;;
+    *) echo "deps.sh: unknown option $arg (known: --fuzz, --video, --browser)" >&2; exit 2 ;;
   esac
 done
 

@@ -9,8 +9,9 @@ cd "$(dirname "$0")/.."
 mode="${1:-render}"
 case "$mode" in render|test) ;; *) echo "usage: $0 [render|test]" >&2; exit 2;; esac
 
-# The test suite also covers `render --video`, so it installs ffmpeg too (deps.sh --video).
-if [ "$mode" = test ]; then scripts/deps.sh --video; else scripts/deps.sh; fi
+# The test suite also covers `render --video` and looks at the HTML report in a headless
+# browser, so it installs ffmpeg and Chromium too (deps.sh --video --browser).
+if [ "$mode" = test ]; then scripts/deps.sh --video --browser; else scripts/deps.sh; fi
 
 preset=default
 if [ "${CI:-}" = "true" ]; then preset=ci; fi

@@ -205,6 +205,24 @@ std::optional<CheckResult> render_property(vk::Context& ctx, const fs::path& tom
 
 } // namespace
 
+// The image a failed check read, for the report: DIR/<case>.check-N.png, tone-mapped when it
+// holds values outside [0, 1] (then the name says so). Empty when the case image shows it
+// already (`same_as_case` and in range) or it cannot be written (the check's failure stands).
+std::string save_check_image(const image::Image& img, const fs::path& case_path, size_t index, bool same_as_case) {
+    bool tone_mapped = false;
+    image::Image shown = image::display_copy(img, &tone_mapped);
+    if (same_as_case && !tone_mapped) return {};
+    if (shown.depth > 1) {  // a 3D image: its first slice
+        shown.depth = 1;
+        shown.pixels.resize(static_cast<size_t>(shown.width) * shown.height * 4);
+    }
+    fs::path f = case_path;
+    f += ".check-" + std::to_string(index) + (tone_mapped ? ".tonemapped.png" : ".png");
+    std::error_code ec;
+    fs::create_directories(f.parent_path(), ec);
+    return image::save_image(shown, f) ? f.string() : std::string();
+}
+
 fs::path case_stem(const RunOptions& opt, const fs::path& toml, const std::string& name) {
     if (opt.output_stem.empty()) return toml.parent_path().filename().string() + "." + name;
     return opt.output_stem / name;
@@ -299,6 +317,11 @@ std::vector<CaseResult> run_preset_tests(vk::ContextSlot& slot, const fs::path& 
                     else if (auto r2 = render_property(ctx, toml, t, opt, c, which, **target)) cr.checks.push_back(*r2);
                     else
                         cr.checks.push_back({c.kind, false, "no image check of kind '" + c.kind + "' (" + c.loc.str() + ")", {}, {}, {}});
+                    // A failed check shows, in the report, the image it read, unless that is the
+                    // case's own 8-bit image already there.
+                    if (!opt.report_dir.empty() && !cr.checks.back().passed)
+                        cr.checks.back().actual_file = save_check_image(**target, opt.report_dir / case_id, cr.checks.size(),
+                                                                        own && (**target).depth == 1 && !cr.image_file.empty());
                 }
             }
         }

@@ -39,6 +39,11 @@ std::vector<std::string> generator_names();
 Result<Image> generate_image(const std::string& generator, int width, int height, int depth,
                              const std::map<std::string, std::vector<double>>& args);
 
+// An image for a person to look at as 8-bit: as stored when it lies in [0, 1]; otherwise (HDR,
+// negative values) each channel through x / (1 + |x|) sign-kept, then the sRGB curve, and
+// `*tone_mapped` says so. Reports use it for the images checks read.
+Image display_copy(const Image& img, bool* tone_mapped);
+
 // Colour helpers.
 float srgb_to_linear(float c);
 float linear_to_srgb(float c);

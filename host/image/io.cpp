@@ -109,6 +109,27 @@ Status save_image(const Image& img, const fs::path& file, const SaveOptions& opt
 }
 
 float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+Image display_copy(const Image& img, bool* tone_mapped) {
+    bool out_of_range = false, negative = false;
+    for (size_t i = 0; i < img.pixels.size(); ++i) {
+        if (i % 4 == 3) continue;
+        const float v = img.pixels[i];
+        if (!(v >= 0.0f && v <= 1.0f)) out_of_range = true;
+        if (v < 0.0f) negative = true;
+    }
+    if (tone_mapped) *tone_mapped = out_of_range;
+    if (!out_of_range) return img;
+    Image out = img;
+    for (size_t i = 0; i < out.pixels.size(); ++i) {
+        if (i % 4 == 3) { out.pixels[i] = 1.0f; continue; }  // the alpha of HDR data is rarely coverage
+        const float v = std::isfinite(out.pixels[i]) ? out.pixels[i] : 0.0f;
+        const float m = linear_to_srgb(std::fabs(v) / (1.0f + std::fabs(v)));
+        // Signed data (normals, velocities): 0 is mid grey, negatives the lower half.
+        out.pixels[i] = negative ? 0.5f + (v < 0.0f ? -0.5f : 0.5f) * m : m;
+    }
+    return out;
+}
+
 float linear_to_srgb(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
 
 } // namespace pl::image
