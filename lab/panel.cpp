@@ -7,8 +7,11 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <set>
 
 namespace pl::lab {
 
@@ -142,16 +145,66 @@ void passes_section(LabState& s, const exec::Executor& ex) {
     }
 }
 
+// The images in the order passes write them ("pass: image"), then those no pass writes
+// (textures, inputs). Multisampled images are left out: the viewer reads their resolve.
+std::vector<std::pair<std::string, std::string>> images_in_pass_order(const exec::Executor& ex) {
+    const auto& images = ex.resources().images;
+    const auto& g = ex.graph();
+    std::vector<std::pair<std::string, std::string>> out;  // (image, label)
+    std::set<std::string> listed;
+    auto add = [&](const std::string& name, const std::string& label) {
+        auto it = images.find(name);
+        if (it == images.end() || listed.count(name)) return;
+        if (it->second.phys[0] && it->second.phys[0]->image.info().samples != VK_SAMPLE_COUNT_1_BIT) return;
+        listed.insert(name);
+        out.emplace_back(name, label);
+    };
+    for (size_t i : g.order)
+        for (const auto& w : g.passes[i].io.writes) add(w, g.passes[i].desc->name + ": " + w);
+    for (const auto& [name, gi] : images) add(name, name);
+    return out;
+}
+
+void viewer_stats_section(LabState& s) {
+    const ImageStats& st = s.viewer_stats;
+    if (ImGui::BeginTable("stats", 4, ImGuiTableFlags_SizingFixedFit)) {
+        const char* names[] = {"R", "G", "B", "A"};
+        for (int c = 0; c < 4; ++c) {
+            ImGui::TableNextColumn();
+            ImGui::Text("%s", names[c]);
+            ImGui::TableNextColumn();
+            ImGui::Text("min %.4g", st.min[c]);
+            ImGui::TableNextColumn();
+            ImGui::Text("max %.4g", st.max[c]);
+            ImGui::TableNextColumn();
+            ImGui::Text("mean %.4g", st.mean[c]);
+        }
+        ImGui::EndTable();
+    }
+    if (st.nonfinite) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%zu of %zu texels are NaN or Inf (shown white)", st.nonfinite, st.texels);
+    if (!st.histogram.empty()) {
+        char label[96];
+        std::snprintf(label, sizeof label, "%.4g .. %.4g%s", st.lo, st.hi, st.log_scale ? " (log2 bins)" : "");
+        ImGui::PlotHistogram("##hist", st.histogram.data(), static_cast<int>(st.histogram.size()), 0, label, 0.0f, FLT_MAX, ImVec2(0, 60));
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s of the finite texels in %zu equal bins", s.viewer_mapping.channel ? "the channel" : "luminance (Rec. 709)",
+                              st.histogram.size());
+        ImGui::Text("99%% of texels <= %.4g: auto EV %+.2f", st.p99, auto_exposure_ev(st));
+    }
+}
+
 void viewer_section(LabState& s, const exec::Executor& ex) {
     ImGui::Checkbox("show in the window", &s.show_viewer);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the window shows this image instead of the output; hover it for texel values");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the window shows this image instead of the output: wheel zooms, drag pans, hover reads texels");
     const auto& images = ex.resources().images;
     if (s.viewer_image.empty() || !images.count(s.viewer_image)) s.viewer_image = ex.graph().desc.output;
-    if (ImGui::BeginCombo("image", s.viewer_image.c_str())) {
-        for (const auto& [name, gi] : images) {
-            if (gi.phys[0] && gi.phys[0]->image.info().samples != VK_SAMPLE_COUNT_1_BIT) continue;  // read its resolve
-            if (ImGui::Selectable(name.c_str(), name == s.viewer_image)) s.viewer_image = name, s.viewer_mip = s.viewer_layer = 0;
-        }
+    const auto listed = images_in_pass_order(ex);
+    std::string current = s.viewer_image;
+    for (const auto& [name, label] : listed)
+        if (name == s.viewer_image) current = label;
+    if (ImGui::BeginCombo("image", current.c_str())) {
+        for (const auto& [name, label] : listed)
+            if (ImGui::Selectable(label.c_str(), name == s.viewer_image)) s.viewer_image = name, s.viewer_mip = s.viewer_layer = 0;
         ImGui::EndCombo();
     }
     auto it = images.find(s.viewer_image);
@@ -165,11 +218,26 @@ void viewer_section(LabState& s, const exec::Executor& ex) {
     s.viewer_layer = std::clamp(s.viewer_layer, 0, std::max(0, (is3d ? std::max(1, layers >> s.viewer_mip) : layers) - 1));
     const char* channels[] = {"RGB", "R", "G", "B", "A"};
     ImGui::Combo("channel", &s.viewer_mapping.channel, channels, 5);
+    ImGui::BeginDisabled(s.viewer_auto_exposure);
     ImGui::SliderFloat("exposure EV", &s.viewer_mapping.exposure_ev, -10.0f, 10.0f, "%+.1f");
+    ImGui::EndDisabled();
+    ImGui::Checkbox("auto exposure", &s.viewer_auto_exposure);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("every frame, the EV that maps the 99th percentile of the shown value to white (HDR images)");
     ImGui::Checkbox("encode sRGB for display", &s.viewer_mapping.encode_srgb);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("on for linear (float/unorm) data, off for images that already hold sRGB-encoded values");
     ImGui::TextDisabled("%ux%u, %u mip(s), %u layer(s), %s", gi.extent.width, gi.extent.height, gi.mips, gi.layers,
                         gi.desc ? gi.desc->format.c_str() : "");
+    if (!s.show_viewer) return;
+    {
+        const ImGuiIO& io = ImGui::GetIO();
+        const FitRect r = view_rect(s.viewer_view, s.viewer_pixels.width, s.viewer_pixels.height,
+                                    static_cast<int>(io.DisplaySize.x * io.DisplayFramebufferScale.x) - s.dock_px,
+                                    static_cast<int>(io.DisplaySize.y * io.DisplayFramebufferScale.y));
+        ImGui::Text("zoom %.3gx%s (wheel; drag pans)", r.scale, s.viewer_view.fitted ? ", fitted" : "");
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("fit")) s.viewer_view.fitted = true;
+    viewer_stats_section(s);
 }
 
 // The viewer fills the view: the texel under the cursor, with its float value, as a tooltip.
@@ -177,8 +245,9 @@ void viewer_hover(const LabState& s, const ViewerTexture& v) {
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantCaptureMouse) return;
     float fx = io.DisplayFramebufferScale.x, fy = io.DisplayFramebufferScale.y;
-    FitRect r = fit_rect(v.width(), v.height(), static_cast<int>(io.DisplaySize.x * fx) - s.dock_px, static_cast<int>(io.DisplaySize.y * fy));
-    int x = static_cast<int>((io.MousePos.x * fx - s.dock_px - r.x) / r.scale), y = static_cast<int>((io.MousePos.y * fy - r.y) / r.scale);
+    FitRect r = view_rect(s.viewer_view, v.width(), v.height(), static_cast<int>(io.DisplaySize.x * fx) - s.dock_px,
+                          static_cast<int>(io.DisplaySize.y * fy));
+    const auto [x, y] = texel_at(r, io.MousePos.x * fx - s.dock_px, io.MousePos.y * fy);
     const image::Image& px = s.viewer_pixels;
     if (x < 0 || y < 0 || x >= px.width || y >= px.height) return;
     const float* c = px.at(x, y);
@@ -245,7 +314,8 @@ void draw_panel(LabState& s, exec::Executor& ex, const ViewerTexture* viewer, co
     if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) time_section(s);
     if (ImGui::CollapsingHeader("Passes", ImGuiTreeNodeFlags_DefaultOpen)) passes_section(s, ex);
     if (ImGui::CollapsingHeader("Cameras", ex.graph().desc.cameras.empty() ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) cameras_section(ex);
-    if (ImGui::CollapsingHeader("Images")) viewer_section(s, ex);
+    // Open from the start when the lab was asked to inspect an image (--inspect).
+    if (ImGui::CollapsingHeader("Images", s.show_viewer ? ImGuiTreeNodeFlags_DefaultOpen : 0)) viewer_section(s, ex);
     if (!s.status.empty()) ImGui::TextWrapped("%s", s.status.c_str());
     ImGui::TextDisabled("F1 keys, Tab hides this panel");
     ImGui::End();

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "exec/executor.hpp"
+#include "image_stats.hpp"
 #include "viewer.hpp"
 
 #include <array>
@@ -34,7 +35,10 @@ struct LabState {
     std::string viewer_image;
     int viewer_mip = 0, viewer_layer = 0;
     ViewerMapping viewer_mapping;
+    ViewerView viewer_view;          // zoom and pan (wheel and drag over the view while it shows)
+    bool viewer_auto_exposure = false;  // exposure from the image's 99th percentile, every frame
     image::Image viewer_pixels;  // the last readback, for texel values under the cursor
+    ImageStats viewer_stats;     // of viewer_pixels, for the channel shown
     // Param values set in the panel, re-applied after every reload so edits to a shader never
     // reset what the user dialled in.
     std::map<std::string, std::array<double, 4>> touched;

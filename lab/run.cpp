@@ -34,14 +34,20 @@ namespace pl::lab {
 
 namespace {
 
-// Never overwrite: the first free passlab-screenshot-N.png in the working folder.
-void screenshot(exec::Executor& ex, int& counter) {
-    fs::path file;
-    do file = "passlab-screenshot-" + std::to_string(++counter) + ".png";
-    while (fs::exists(file));
+// F12. Never overwrite: the first N for which passlab-screenshot-N.png (the graph's output at
+// its own size) and passlab-window-N.png (the window as shown: the view, or the image viewer,
+// and the panel when it is shown; Tab first for the view alone) are both free.
+void screenshot(exec::Executor& ex, Window& window, int& counter) {
+    fs::path file, shown;
+    do {
+        ++counter;
+        file = "passlab-screenshot-" + std::to_string(counter) + ".png";
+        shown = "passlab-window-" + std::to_string(counter) + ".png";
+    } while (fs::exists(file) || fs::exists(shown));
     auto img = ex.read(ex.graph().desc.output);
     if (img && image::save_image(*img, file)) std::fprintf(stderr, "passlab: screenshot %s\n", file.string().c_str());
     else std::fprintf(stderr, "passlab: screenshot failed\n");
+    window.capture_next(shown.string());  // written after this frame presents (it says so)
 }
 
 // A counter above its buffer's capacity: warned once per episode (frames in a row above it), not
@@ -254,7 +260,16 @@ int run(const RunOptions& o, const CommonOptions& c) {
         // Input: orbit camera, Shadertoy iMouse (xy while the button is down, zw = click
         // position, negative once released), keys. What the panel is using is not the scene's.
         WindowInput input = (*window)->take_input();
-        if (!(*overlay)->wants_mouse()) {
+        const bool inspecting = st.show_viewer && viewer->ready();
+        if (!(*overlay)->wants_mouse() && inspecting) {
+            // The viewer has the mouse: the wheel zooms about the cursor, a drag pans.
+            const auto vs = view_size();
+            const FitRect r = view_rect(st.viewer_view, viewer->width(), viewer->height(), vs[0], vs[1]);
+            if (input.scroll != 0.0)
+                zoom_at(st.viewer_view, r, input.scroll, static_cast<float>(input.x - st.dock_px), static_cast<float>(input.y));
+            else if (input.drag_dx != 0.0 || input.drag_dy != 0.0)
+                pan_by(st.viewer_view, r, static_cast<float>(input.drag_dx), static_cast<float>(input.drag_dy));
+        } else if (!(*overlay)->wants_mouse()) {
             camera.yaw -= static_cast<float>(input.drag_dx) * 0.3f;
             camera.pitch = std::clamp(camera.pitch + static_cast<float>(input.drag_dy) * 0.3f, -89.0f, 89.0f);
             camera.distance = std::clamp(camera.distance * static_cast<float>(std::pow(0.9, input.scroll)), 0.01f, 1e4f);
@@ -377,11 +392,16 @@ int run(const RunOptions& o, const CommonOptions& c) {
             return rc;
         }
         warn_counter_overflow(*current, overflowing, log);
-        if (st.screenshot) screenshot(*current, screenshots);
+        if (st.screenshot) screenshot(*current, **window, screenshots);
         st.screenshot = false;
         if (st.show_viewer) {
             if (auto img = current->read(st.viewer_image.empty() ? current->graph().desc.output : st.viewer_image, st.viewer_mip,
                                          st.viewer_layer)) {
+                st.viewer_stats = image_stats(*img, st.viewer_mapping.channel);
+                if (st.viewer_auto_exposure) st.viewer_mapping.exposure_ev = auto_exposure_ev(st.viewer_stats);
+                // Another size (image, level): fit it again; the same size keeps the zoomed
+                // region, so two images can be compared texel for texel.
+                if (img->width != viewer->width() || img->height != viewer->height()) st.viewer_view.fitted = true;
                 viewer->update(*img, st.viewer_mapping);
                 st.viewer_pixels = std::move(*img);
             }
@@ -409,7 +429,9 @@ int run(const RunOptions& o, const CommonOptions& c) {
             const int dock = std::min(st.dock_px, static_cast<int>(ext.width) - 1);
             const VkRect2D view{{dock, 0}, {ext.width - static_cast<uint32_t>(dock), ext.height}};
             if (!st.show_viewer || !viewer->ready()) return current->record_blit_to(cb, output, dst, view);
-            viewer->record_blit(cb, dst, view);
+            viewer->record_blit(cb, dst, view,
+                                view_rect(st.viewer_view, viewer->width(), viewer->height(), static_cast<int>(view.extent.width),
+                                          static_cast<int>(view.extent.height)));
             return ok_status();
         };
         rec.overlay = [&](VkCommandBuffer cb) { (*overlay)->record(cb); };

@@ -6,17 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 namespace pl::lab {
-
-FitRect fit_rect(int w, int h, int W, int H) {
-    FitRect r;
-    if (w <= 0 || h <= 0) return r;
-    r.scale = std::min(static_cast<float>(W) / w, static_cast<float>(H) / h);
-    r.x = (W - w * r.scale) * 0.5f;
-    r.y = (H - h * r.scale) * 0.5f;
-    return r;
-}
 
 void ViewerTexture::resize(int w, int h) {
     vk::ImageInfo info;
@@ -67,7 +59,7 @@ void ViewerTexture::barrier(VkCommandBuffer cb, VkImageLayout to, VkPipelineStag
     layout_state_ = to;
 }
 
-void ViewerTexture::record_blit(VkCommandBuffer cb, VkImage dst, VkRect2D to) {
+void ViewerTexture::record_blit(VkCommandBuffer cb, VkImage dst, VkRect2D to, const FitRect& r) {
     constexpr auto transfer = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
     if (pending_) {
         barrier(cb, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, transfer, 0, transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT);
@@ -79,15 +71,16 @@ void ViewerTexture::record_blit(VkCommandBuffer cb, VkImage dst, VkRect2D to) {
     }
     if (!uploaded_) return;
     barrier(cb, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT, transfer, VK_ACCESS_2_TRANSFER_READ_BIT);
-    FitRect r = fit_rect(width_, height_, static_cast<int>(to.extent.width), static_cast<int>(to.extent.height));
-    auto x0 = to.offset.x + static_cast<int32_t>(r.x), y0 = to.offset.y + static_cast<int32_t>(r.y);
-    VkImageBlit blit{.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-                     .srcOffsets = {{0, 0, 0}, {width_, height_, 1}},
-                     .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-                     .dstOffsets = {{x0, y0, 0},
-                                    {std::max(x0 + 1, to.offset.x + static_cast<int32_t>(r.x + width_ * r.scale)),
-                                     std::max(y0 + 1, to.offset.y + static_cast<int32_t>(r.y + height_ * r.scale)), 1}}};
-    vkCmdBlitImage(cb, image_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit,
+    // Only what falls inside the view: blit rectangles must lie within both images.
+    std::vector<VkImageBlit> blits;
+    for (const BlitRegion& b : blit_regions(r, width_, height_, static_cast<int>(to.extent.width), static_cast<int>(to.extent.height)))
+        blits.push_back({.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                         .srcOffsets = {{b.sx0, b.sy0, 0}, {b.sx1, b.sy1, 1}},
+                         .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                         .dstOffsets = {{to.offset.x + b.dx0, to.offset.y + b.dy0, 0}, {to.offset.x + b.dx1, to.offset.y + b.dy1, 1}}});
+    if (blits.empty()) return;
+    vkCmdBlitImage(cb, image_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                   static_cast<uint32_t>(blits.size()), blits.data(),
                    VK_FILTER_NEAREST);
 }
 

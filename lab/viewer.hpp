@@ -5,6 +5,7 @@
 #pragma once
 
 #include "image/image.hpp"
+#include "viewer_view.hpp"
 #include "vk/resources.hpp"
 
 namespace pl::lab {
@@ -15,12 +16,6 @@ struct ViewerMapping {
     bool encode_srgb = true;  // linear data: encode for the display
 };
 
-// Where an image of w x h lands in a window of W x H: scaled to fit, centred, aspect kept.
-struct FitRect {
-    float x = 0, y = 0, scale = 1;
-};
-FitRect fit_rect(int w, int h, int W, int H);
-
 class ViewerTexture {
   public:
     explicit ViewerTexture(vk::Context& ctx) : ctx_(ctx) {}
@@ -30,8 +25,9 @@ class ViewerTexture {
     // Maps `src` into the staging buffer; the next record_blit uploads it first.
     void update(const image::Image& src, const ViewerMapping& m);
     // Records the pending upload and a blit into the rectangle `to` of `dst` (TRANSFER_DST,
-    // already cleared), fitted with nearest filtering so magnified texels stay squares.
-    void record_blit(VkCommandBuffer cb, VkImage dst, VkRect2D to);
+    // already cleared), placed by `r` (view_rect, relative to `to`) with nearest filtering so
+    // magnified texels stay squares.
+    void record_blit(VkCommandBuffer cb, VkImage dst, VkRect2D to, const FitRect& r);
     bool ready() const { return uploaded_ || pending_; }
     int width() const { return width_; }
     int height() const { return height_; }
