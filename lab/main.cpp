@@ -1,6 +1,7 @@
 // passlab: command-line entry. Parses arguments with CLI11 and calls one verb; all work lives in
 // the verbs and the host library.
 #include "verbs.hpp"
+#include "vk/check.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -212,6 +213,11 @@ int main(int argc, char** argv) {
     };
     try {
         return dispatch();
+    } catch (const pl::vk::DeviceLost& e) {
+        // Outside the live lab (which recreates the device) a lost device ends the verb.
+        std::fprintf(stderr, "passlab: error: the Vulkan device was lost (%s)\n"
+                             "    hint: the driver reset the GPU, usually after a shader ran too long; run again\n", e.what());
+        return 3;
     } catch (const std::bad_alloc&) {
         // A host allocation too large for the machine (a readback of a huge image under a
         // memory limit): an environment error, exit 3, not an abort.

@@ -16,6 +16,7 @@
 #include "reload/watcher.hpp"
 #include "exec/param_sidecar.hpp"
 #include "wall_clock.hpp"
+#include "vk/check.hpp"
 #include "window.hpp"
 
 #include <GLFW/glfw3.h>
@@ -24,6 +25,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <future>
 #include <map>
 #include <optional>
@@ -239,6 +241,59 @@ int run(const RunOptions& o, const CommonOptions& c) {
     int from_sidecar = o.sidecar ? apply_sidecar(st, *current, sidecar, o.set) : 0;
     log.write("started", {{"preset", toml.string()}, {"sidecar_values", from_sidecar}});
 
+    // VK_ERROR_DEVICE_LOST (on a GPU: the driver reset it, usually after a runaway shader):
+    // everything on the old device goes, a new device, window and panel are made, and the graph
+    // is built again from the files (a reload's rules: the params set in the panel return, the
+    // camera and clock go on). Three losses in one session end the lab: something is wrong.
+    int losses = 0;
+    auto recover_device = [&](const std::string& why) -> Status {
+        ++losses;
+        std::fprintf(stderr, "passlab: the Vulkan device was lost (%s)%s\n", why.c_str(),
+                     losses <= 3 ? ": recreating it and rebuilding the graph" : "");
+        log.write("device-lost", {{"message", why}, {"loss", losses}});
+        if (losses > 3) return make_error("the Vulkan device was lost " + std::to_string(losses) + " times in this session: giving up");
+        int ww = 0, wh = 0;
+        glfwGetWindowSize((*window)->handle(), &ww, &wh);
+        current.reset();
+        pipelines = exec::PipelineCache{};
+        viewer.reset();
+        overlay->reset();
+        window->reset();
+        ctx->reset();  // destroying is allowed on a lost device; nothing is waited for
+        ctx = vk::Context::create(co);
+        if (!ctx) return ctx.error();
+        window = Window::create(**ctx, std::max(1, ww), std::max(1, wh), title, mode);
+        if (!window) return window.error();
+        overlay = Overlay::create(**ctx, **window);
+        if (!overlay) return overlay.error();
+        viewer = std::make_unique<ViewerTexture>(**ctx);
+        bo.size = built_size;
+        auto again = exec::build_graph(toml, bo);
+        if (!again) return again.error();
+        auto next = exec::Executor::create(**ctx, std::move(again.value()), &pipelines);
+        if (!next) return next.error();
+        current = std::move(next.value());
+        current->set_timeout(frame_timeout);
+        apply_wall_clock(current->params(), o.set, started);
+        base_params = current->params();
+        reapply_touched(st, *current);
+        watch_all(current->graph().dependencies);
+        log.write("device-recreated", {{"loss", losses}, {"device", (*ctx)->device_description()}});
+        return ok_status();
+    };
+    // Submits: a Vulkan call that reports the loss throws (vk/check.hpp); the fence waits say so.
+    bool lost = false;
+    auto on_device = [&](const std::function<Status()>& submit) -> Status {
+        try {
+            Status r = submit();
+            if (!r && (*ctx)->lost()) lost = true;
+            return r;
+        } catch (const vk::DeviceLost& e) {
+            lost = true;
+            return make_error(e.what());
+        }
+    };
+
     auto last = std::chrono::steady_clock::now();
     graph::OrbitCamera camera = current->graph().desc.view.orbit;
     glm::vec4 mouse(0.0f);
@@ -247,6 +302,9 @@ int run(const RunOptions& o, const CommonOptions& c) {
     double elapsed = 0;
     std::fprintf(stderr, "passlab: drag to orbit, wheel to zoom, space pause, -> step, F12 screenshot, Tab panel, F1 keys, Esc quit\n");
     while (!(*window)->should_close()) {
+        if ((*ctx)->lost()) {  // seen by a readback (viewer, screenshot) of the last frame
+            if (auto r = recover_device("a readback reported it"); !r) return report(r.error());
+        }
         (*window)->poll();
         auto now = std::chrono::steady_clock::now();
         double dt = std::chrono::duration<double>(now - last).count();
@@ -386,7 +444,12 @@ int run(const RunOptions& o, const CommonOptions& c) {
         in.mouse = mouse;
         // The shader's keyboard; the panel's text fields keep theirs.
         if (!(*overlay)->wants_keyboard()) in.keys = input.keys;
-        if (auto s = current->render(in); !s) {
+        if (auto s = on_device([&] { return current->render(in); }); !s) {
+            if (lost) {
+                lost = false;
+                if (auto r = recover_device(s.error().message); !r) return report(r.error());
+                continue;
+            }
             int rc = report(s.error());
             if ((*ctx)->hung()) exit_after_hang(rc);
             return rc;
@@ -435,7 +498,12 @@ int run(const RunOptions& o, const CommonOptions& c) {
             return ok_status();
         };
         rec.overlay = [&](VkCommandBuffer cb) { (*overlay)->record(cb); };
-        if (auto presented = (*window)->present(rec); !presented) return report(presented.error());
+        if (auto presented = on_device([&] { return (*window)->present(rec); }); !presented) {
+            if (!lost) return report(presented.error());
+            lost = false;
+            if (auto r = recover_device(presented.error().message); !r) return report(r.error());
+            continue;
+        }
         nlohmann::ordered_json presented = {{"frame", frame}, {"broken", st.error.has_value()}};
         if (first_new_frame) presented["first_after_reload"] = true;
         log.write("frame-presented", presented);

@@ -30,6 +30,7 @@ void fail(const char* call, VkResult r, const char* file, int line) {
         std::fflush(stderr);
         std::_Exit(3);  // the exit code of environment errors (docs/cli.md)
     }
+    if (r == VK_ERROR_DEVICE_LOST) throw DeviceLost(std::string(call) + " returned VK_ERROR_DEVICE_LOST");
     std::fprintf(stderr, "passlab: internal Vulkan failure: %s returned %s (%d) at %s:%d\n", call,
                  result_name(r), static_cast<int>(r), file, line);
     std::abort();

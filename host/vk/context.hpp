@@ -68,6 +68,10 @@ class Context {
     // True after a watchdog timeout: the GPU may still be running the shader, so nothing may be
     // waited for or destroyed; callers end the process (std::_Exit) after reporting.
     bool hung() const { return hung_; }
+    // True once a wait reported VK_ERROR_DEVICE_LOST (or PASSLAB_SIMULATE_DEVICE_LOST=N made the
+    // N-th fence wait of the process report it, "N+" every N-th, for tests): nothing more runs on this device;
+    // its objects may still be destroyed (Vulkan allows that on a lost device).
+    bool lost() const { return lost_; }
 
     uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags wanted) const;
     // Bytes of the largest device-local memory heap (all of system memory on a CPU driver).
@@ -112,6 +116,7 @@ class Context {
     std::string driver_name_, driver_info_;
     bool validation_ = false;
     bool hung_ = false;
+    bool lost_ = false;
     UniqueCommandPool pool_;
 
     mutable std::mutex msg_mutex_;
