@@ -5,9 +5,11 @@
 //   full-res input is shown there, the gather from kSharpBelow + 1 px on (linear between):
 //     out = mix(sharp, gathered, clamp(blur - kSharpBelow, 0, 1))
 //   resolution = full: the gather itself.
+// The three fetches are made unconditionally and the result selected (lavapipe fetches inside
+// an untaken branch anyway; straight code lets display.frag share them): the same values.
 const float kSharpBelow = 1.0;
 vec4 dof_composite(sampler2D color, sampler2D result, sampler2D blur, vec2 uv) {
     vec4 sharp = textureLod(color, uv, 0.0), blurred = texture(result, uv);
-    if (params.resolution == RESOLUTION_HALF) blurred = mix(sharp, blurred, clamp(texture(blur, uv).x - kSharpBelow, 0.0, 1.0));
-    return blurred;
+    vec4 mixed = mix(sharp, blurred, clamp(texture(blur, uv).x - kSharpBelow, 0.0, 1.0));
+    return params.resolution == RESOLUTION_HALF ? mixed : blurred;
 }

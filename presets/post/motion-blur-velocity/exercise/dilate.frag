@@ -7,6 +7,7 @@
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 vel_out;
 uniform sampler2D vel_in;
+uniform sampler2D vel_near;  // tiles.frag: the largest |v|^2 within a tile of this one's tile
 
 #ifdef DILATE_X
 const ivec2 kAxis = ivec2(1, 0);
@@ -18,6 +19,8 @@ void main() {
     ivec2 px = ivec2(gl_FragCoord.xy), size = ivec2(frame.resolution.xy);
     vec2 best = texelFetch(vel_in, px, 0).xy;
     int r = params.dilate ? params.radius : 0;
+    // Speed (tiles.frag): nothing within reach moves, so the window's longest is the pixel's own.
+    if (texelFetch(vel_near, px / max(16, 2 * params.radius), 0).x == 0.0) r = 0;
     // TODO 4: the dilation (000 L3634, "discontinuities at silhouettes"). Over the window of
     // r pixels on both sides of px along kAxis (clamped to the image), keep in `best` the
     // velocity read from vel_in that is the longest (by length, not per component), so that a

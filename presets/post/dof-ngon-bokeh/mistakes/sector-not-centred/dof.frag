@@ -9,7 +9,8 @@
 // si = ceil(clamp(3 blur, 2, clamp(maxTaps, 2, 16))), shaped by getBokehTapSampleCoord and
 // scaled by blur pixels; each tap's weight b = 1 + col max((luma(col) - threshold) gain, 0) blur
 // lifts highlights (bright taps count more: the bokeh discs light up); the pixel itself counts 1.
-// Optional chromatic aberration fetches r, g, b fringe x blur pixels apart.
+// Optional chromatic aberration fetches r, g, b fringe x blur pixels apart (params.chromatic in
+// percent: 002's uChromaticAberration x 100).
 // PITFALLS of the printed code (fixed, stated): the sampler is declared `fboColotBuffer` and
 // used as `fboColorBuffer` (here one name, `color`); `bias = 0.5` is declared and never used
 // (dropped); GLSL 1.50 `varying` / `gl_FragColor` become in / out.
@@ -23,6 +24,9 @@
 // Also writes `blur` = (the simplified blur, the unsimplified |a - b| c of 002's comment L1532,
 // |difference|, how much the gather changed the pixel (largest channel)) for the tests.
 #include "post/coc.glsl"
+#ifndef CHROMATIC
+#define CHROMATIC 1  // the fringe taps (preset.toml: off in the pass `dof`)
+#endif
 layout(location = 0) in vec2 vTexCoord;
 layout(location = 0) out vec4 result;
 layout(location = 1) out vec4 blur_out;
@@ -35,6 +39,7 @@ const float threshold = 0.5, gain = 2.0, fringe = 0.7;  // highlight threshold a
 vec4 sampleIt(vec2 coords) { return max(vec4(0.0), textureLod(color, coords, float(params.resolution == RESOLUTION_HALF))); }
 void main() {
     float fstop = params.fstop;
+    float chromatic = float(params.chromatic) / 100.0;  // 002's uChromaticAberration (0..1)
     float f = params.focal_length;  // focal length in mm (002: 35)
     float d = (params.focus_mode == FOCUS_MODE_CENTRE ? texture(depth, vec2(0.5)).x : params.focus) * 1000.0;
     // full: this pixel's depth texel; half: one texel of the 2x2 it covers (no depth average
@@ -51,23 +56,30 @@ void main() {
         // TODO 3 (L1539-1556): s is the sum of the weights; the pixel itself (already in c) counts 1.
         vec3 s = vec3(1.0);
         vec2 si = vec2(ceil(clamp(blur / scale * 3.0, 2.0, clamp(float(params.max_taps), 2.0, 16.0)))), sio = si + vec2(1.0);
-        for (float sy = 0.0; sy < sio.y; sy += 1.0) {
-            for (float sx = 0.0; sx < sio.x; sx += 1.0) {
-                // getBokehTapSampleCoord(vec2(sx, sy) / si, ...), from the baked table (tap_table.frag).
-                vec2 pwh = texelFetch(tap_table, ivec2(int(sy * sio.x + sx), int(si.x) - 2), 0).xy;
-                vec2 coords = vTexCoord + (pwh * wh);
-                vec2 t = uCanvasInvSize * fringe * blur;
-                vec3 col = sampleIt(coords).xyz;
-                if (params.chromatic > 1e-6) {
-                    // 002's (0, 1) is up with v up: (0, -1) here; the diagonals likewise.
-                    col = mix(col, vec3(sampleIt(coords + vec2(0.0, -1.0) * t).x, sampleIt(coords + vec2(-0.866, 0.5) * t).y,
-                                        sampleIt(coords + vec2(0.866, 0.5) * t).z), params.chromatic);
-                }
-                vec3 bw = (vec3(1.0) + mix(vec3(0.0), col, max((dot(col, vec3(0.299, 0.587, 0.114)) - threshold) * gain, 0.0) * blur));
-                // TODO 3: add this tap, weighted by bw, to c, and its weight to s.
-                c.xyz += col * bw;
-                s += bw;
+        // The (si + 1)^2 taps in 002's order (sy outer, sx inner) as one loop over the table's
+        // index i = sy (si + 1) + sx: the same taps summed in the same order (the same result),
+        // one integer counter instead of two nested float loops (speed, lavapipe).
+        int row = int(si.x) - 2, n = int(sio.x * sio.y);
+        vec2 t = uCanvasInvSize * fringe * blur;
+        for (int i = 0; i < n; ++i) {
+            // getBokehTapSampleCoord(vec2(sx, sy) / si, ...), from the baked table (tap_table.frag).
+            vec2 pwh = texelFetch(tap_table, ivec2(i, row), 0).xy;
+            vec2 coords = vTexCoord + (pwh * wh);
+            vec3 col = sampleIt(coords).xyz;
+#if CHROMATIC
+            // Only in the pass dof_chromatic (preset.toml: chromatic > 0): lavapipe fetches the
+            // three fringe taps of this branch even where it is not taken, so the pass that runs
+            // at chromatic = 0 (dof, CHROMATIC 0) is compiled without it (3x faster).
+            if (chromatic > 1e-6) {
+                // 002's (0, 1) is up with v up: (0, -1) here; the diagonals likewise.
+                col = mix(col, vec3(sampleIt(coords + vec2(0.0, -1.0) * t).x, sampleIt(coords + vec2(-0.866, 0.5) * t).y,
+                                    sampleIt(coords + vec2(0.866, 0.5) * t).z), chromatic);
             }
+#endif
+            vec3 bw = (vec3(1.0) + mix(vec3(0.0), col, max((dot(col, vec3(0.299, 0.587, 0.114)) - threshold) * gain, 0.0) * blur));
+            // TODO 3: add this tap, weighted by bw, to c, and its weight to s.
+            c.xyz += col * bw;
+            s += bw;
         }
         // TODO 3 (continued): the result is the weighted mean of the taps and the pixel.
         c.xyz /= s;
