@@ -25,9 +25,11 @@ layout(location = 10) flat in vec3 g_n2;
 layout(location = 11) flat in vec3 g_p1;
 layout(location = 12) flat in vec3 g_p2;
 layout(location = 0) out vec4 hdr;
-uniform sampler2D offsets;   // (h, h_u, h_v) per unit of the map (bump/offset_map.frag)
+uniform sampler2D offsets;      // (h, h_u, h_v) per unit of the map (bump/offset_map.frag)
+uniform sampler2D height_map;   // its h alone (select.frag): the march's lookups, one channel
+layout(location = 13) flat in mat3 g_m_inv;   // M^-1, once per prism (prism.geom), locations 13-15
 
-float height_at(vec2 uv) { return texture(offsets, uv * params.tiling).x; }
+float height_at(vec2 uv) { return texture(height_map, uv * params.tiling).x; }
 
 // Ray o + t dir against triangle (a, b, c) (Moller-Trumbore); t, or 1e9 if missed. `margin`
 // (barycentric) widens the triangle a little, so a ray through an edge between two faces of
@@ -84,12 +86,12 @@ float prism_exit(vec3 o, vec3 dir, vec3 entry, vec3 d) {
 
 void main() {
     vec3 dir = normalize(g_world - frame.camera_pos.xyz);
-    vec3 d = inverse(g_m) * dir;                       // (u, v, w) per world unit along the ray
+    vec3 d = g_m_inv * dir;                       // (u, v, w) per world unit along the ray
     vec2 uv0 = g_uv01.xy, uv1 = g_uv01.zw, uv2 = g_uv2;
     mat2 to_bary = inverse(mat2(uv1 - uv0, uv2 - uv0));  // (lambda_1, lambda_2) from uv - uv0
     // The entry point in the prism's (u, v, w): this fragment's world position through M^-1
     // (the faces are lifted along vertex normals, so their own uvw would not match M exactly).
-    vec3 entry = inverse(g_m) * (g_world - g_p0) + vec3(uv0, 0.0);
+    vec3 entry = g_m_inv * (g_world - g_p0) + vec3(uv0, 0.0);
     // The ray runs to where it leaves the prism's geometry (world distance = s, as |dir| = 1).
     float s_exit = prism_exit(g_world, dir, entry, d);
     if (s_exit > 1e8) discard;   // grazing a face: no interior to march
