@@ -245,6 +245,14 @@ int run(const RunOptions& o, const CommonOptions& c) {
     // everything on the old device goes, a new device, window and panel are made, and the graph
     // is built again from the files (a reload's rules: the params set in the panel return, the
     // camera and clock go on). Three losses in one session end the lab: something is wrong.
+    // A runaway shader (the watchdog fired): lavapipe cannot cancel it and the device may still
+    // run it, so nothing is destroyed or waited for; the lab says so, logs a terminal event and
+    // ends the process (on a GPU the driver's reset arrives as a device loss instead, above).
+    auto end_on_runaway = [&](int rc, const std::string& why) {
+        std::fprintf(stderr, "passlab: a shader runs away and this driver cannot cancel it: the lab ends (fix the shader and start it again)\n");
+        log.write("ended", {{"reason", "runaway"}, {"message", why}, {"exit_code", rc}});
+        exit_after_hang(rc);
+    };
     int losses = 0;
     auto recover_device = [&](const std::string& why) -> Status {
         ++losses;
@@ -410,7 +418,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
                     log.write("reload-failed", {{"file", e.loc.file}, {"line", e.loc.line}, {"col", e.loc.col}, {"pass", e.pass}, {"message", e.message}});
                     (*window)->set_title(title + " — ERROR " + e.loc.str() + ": " + e.message);
                     st.error = e;
-                    if ((*ctx)->hung()) exit_after_hang(1);
+                    if ((*ctx)->hung()) end_on_runaway(1, e.message);
                 } else {
                     // The old executor is retired, not destroyed: it goes once the GPU work
                     // submitted so far has finished (Context::collect after the next frame's fence).
@@ -451,7 +459,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
                 continue;
             }
             int rc = report(s.error());
-            if ((*ctx)->hung()) exit_after_hang(rc);
+            if ((*ctx)->hung()) end_on_runaway(rc, s.error().message);
             return rc;
         }
         warn_counter_overflow(*current, overflowing, log);
