@@ -60,8 +60,12 @@ void expect_exact_cover(const FitRect& r, int w, int h, int W, int H) {
         ASSERT_LE(b.sx1, w);
         ASSERT_LT(b.dx0, b.dx1);
         ASSERT_LT(b.dy0, b.dy1);
-        if (b.sx1 - b.sx0 > 1) EXPECT_NEAR(static_cast<double>(b.dx1 - b.dx0) / (b.sx1 - b.sx0), r.scale, 1.0 / (b.sx1 - b.sx0));
-        if (b.sy1 - b.sy0 > 1) EXPECT_NEAR(static_cast<double>(b.dy1 - b.dy0) / (b.sy1 - b.sy0), r.scale, 1.0 / (b.sy1 - b.sy0));
+        if (b.sx1 - b.sx0 > 1) {
+            EXPECT_NEAR(static_cast<double>(b.dx1 - b.dx0) / (b.sx1 - b.sx0), r.scale, 1.0 / (b.sx1 - b.sx0));
+        }
+        if (b.sy1 - b.sy0 > 1) {
+            EXPECT_NEAR(static_cast<double>(b.dy1 - b.dy0) / (b.sy1 - b.sy0), r.scale, 1.0 / (b.sy1 - b.sy0));
+        }
         for (int y = b.dy0; y < b.dy1; ++y)
             for (int x = b.dx0; x < b.dx1; ++x) ++hits[static_cast<size_t>(y) * W + x];
     }
