@@ -275,9 +275,9 @@ void error_overlay(const Error& e) {
 
 void help_window(LabState& s) {
     ImGui::Begin("Keys", &s.show_help, ImGuiWindowFlags_AlwaysAutoResize);
-    const char* rows[][2] = {{"drag", "orbit the camera"},       {"wheel", "zoom"},
+    const char* rows[][2] = {{"drag", "orbit the camera (image viewer: pan)"}, {"wheel", "zoom (image viewer: about the cursor)"},
                              {"space", "pause / resume time"},   {"->", "step one frame (1/60 s) while paused"},
-                             {"F12", "screenshot (PNG, never overwrites)"}, {"Tab", "hide / show the panel"},
+                             {"F12", "output and window PNGs (never overwrites)"}, {"Tab", "hide / show the panel"},
                              {"F1", "this help"},                {"Esc", "quit"}};
     for (auto& r : rows) {
         ImGui::TextUnformatted(r[0]);

@@ -308,7 +308,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
     int frame = 0, screenshots = 0;
     std::map<std::string, bool> overflowing;  // buffers whose counter is above capacity now
     double elapsed = 0;
-    std::fprintf(stderr, "passlab: drag to orbit, wheel to zoom, space pause, -> step, F12 screenshot, Tab panel, F1 keys, Esc quit\n");
+    std::fprintf(stderr, "passlab: drag to orbit, wheel to zoom (the image viewer: pan, zoom), space pause, -> step, F12 screenshot, Tab panel, F1 keys, Esc quit\n");
     while (!(*window)->should_close()) {
         if ((*ctx)->lost()) {  // seen by a readback (viewer, screenshot) of the last frame
             if (auto r = recover_device("a readback reported it"); !r) return report(r.error());
