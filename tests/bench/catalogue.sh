@@ -1,6 +1,7 @@
 #!/bin/sh
 # Per-preset frame time and per-pass GPU time at one size, as a Markdown table (for issue notes
-# and READMEs), then a summary: presets within 33 ms and 16.7 ms per frame, the slowest five.
+# and READMEs), then a summary: presets within 33 ms and 16.7 ms per frame, the slowest five,
+# the cold start and the single-pass edit-to-frame p95.
 # Benchmarks are not tests: nothing here fails on a time.
 # Usage: catalogue.sh PASSLAB [SIZE] [FRAMES] [PRESET_DIR ...]
 #   catalogue.sh build/default/lab/passlab 640x360 10 presets/shading presets/post
@@ -40,3 +41,15 @@ awk -F'|' -v size="$size" -v lb="$load_before" -v la="$load_after" '
 echo "slowest five:"
 sort -rn "$rows.ms" | head -5 | awk '{ printf "  %s %s ms\n", $2, $1 }'
 rm -f "$rows.ms"
+# The two latencies issue #21 keeps where they are, so a regression shows in the same summary:
+# cold start (exec to PNG, fBm, median of 5) and a single-pass edit-to-frame p95 (10 edits of
+# tests/live/preset under Xvfb). CATALOGUE_LATENCY=0 leaves them out (no Xvfb, or in a hurry).
+if [ "${CATALOGUE_LATENCY:-1}" != 0 ]; then
+  here=$(cd "$(dirname "$0")" && pwd)
+  cold=$(sh "$here/cold_start.sh" "$passlab" 5 2>/dev/null | awk '/wall, exec to PNG/ { print $NF }')
+  echo "cold start (exec to PNG, fBm 640x360, median of 5): ${cold:-failed} ms"
+  if command -v xvfb-run > /dev/null; then
+    edit=$(sh "$here/reload_latency.sh" "$passlab" 10 2>/dev/null | awk '/^total/ { print $6 }')
+    echo "single-pass edit to new frame p95 (10 edits): ${edit:-failed} ms"
+  fi
+fi
