@@ -45,11 +45,11 @@ rc=0; "$passlab" test good/fsp bad/fsp --report rep -j 1 > run.log 2>&1 || rc=$?
 [ "$rc" = 1 ] || fail "test exited $rc, expected 1: $(cat run.log)"
 [ -f rep/index.html ] || fail "no rep/index.html"
 # The page as Chromium's DOM has it after the script ran.
-shoot() {  # shoot URL PNG DOM [WxH]
+shoot() {  # shoot URL PNG DOM [WxH]  (a profile of its own: HOME may be read-only in CI)
   "$browser" --headless --no-sandbox --disable-gpu --disable-background-networking --disable-extensions \
-    --hide-scrollbars --window-size="${4:-1280,900}" --screenshot="$2" "$1" > /dev/null 2>&1 || true
+    --user-data-dir="$(pwd)/chrome" --hide-scrollbars --window-size="${4:-1280,900}" --screenshot="$2" "$1" > /dev/null 2>&1 || true
   "$browser" --headless --no-sandbox --disable-gpu --disable-background-networking --disable-extensions \
-    --virtual-time-budget=2000 --dump-dom "$1" > "$3" 2> /dev/null || fail "chromium could not load $1"
+    --user-data-dir="$(pwd)/chrome" --virtual-time-budget=2000 --dump-dom "$1" > "$3" 2> /dev/null || fail "chromium could not load $1"
 }
 url="file://$(pwd)/rep/index.html"
 shoot "$url" report.png dom.html

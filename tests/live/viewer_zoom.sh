@@ -18,10 +18,14 @@ trap 'kill $pid 2>/dev/null || true' EXIT
 i=0; until grep -q frame-presented "$work/events.jsonl" 2>/dev/null; do i=$((i+1)); [ $i -lt 300 ] || exit 1; sleep 0.1; done
 w=$(xdotool search --sync --onlyvisible --name "passlab")
 xdotool windowfocus --sync "$w"
-xdotool mousemove --window "$w" 560 100 click 4   # the strip is 360 wide: view point (200, 100)
-sleep 0.5
+frames() { grep -c frame-presented "$work/events.jsonl"; }
+xdotool mousemove --window "$w" 560 100           # the strip is 360 wide: view point (200, 100)
+n=$(frames); i=0; while [ "$(frames)" -lt $((n + 3)) ]; do i=$((i+1)); [ $i -lt 300 ] || exit 1; sleep 0.1; done
+xdotool click 4                                   # one wheel step up, with the cursor there
+# The lab reads the cursor when it takes the wheel step: leave it there for a few frames.
+n=$(frames); i=0; while [ "$(frames)" -lt $((n + 3)) ]; do i=$((i+1)); [ $i -lt 300 ] || exit 1; sleep 0.1; done
 xdotool mousemove --window "$w" 100 300           # over the panel: no texel tooltip on the view
-sleep 0.5
+n=$(frames); i=0; while [ "$(frames)" -lt $((n + 3)) ]; do i=$((i+1)); [ $i -lt 300 ] || exit 1; sleep 0.1; done
 xdotool key F12
 i=0; until grep -q "window captured" "$work/run.log"; do i=$((i+1)); [ $i -lt 100 ] || exit 1; sleep 0.1; done
 INNER
