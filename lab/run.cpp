@@ -241,18 +241,18 @@ int run(const RunOptions& o, const CommonOptions& c) {
     int from_sidecar = o.sidecar ? apply_sidecar(st, *current, sidecar, o.set) : 0;
     log.write("started", {{"preset", toml.string()}, {"sidecar_values", from_sidecar}});
 
-    // VK_ERROR_DEVICE_LOST (on a GPU: the driver reset it, usually after a runaway shader):
-    // everything on the old device goes, a new device, window and panel are made, and the graph
-    // is built again from the files (a reload's rules: the params set in the panel return, the
-    // camera and clock go on). Three losses in one session end the lab: something is wrong.
     // A runaway shader (the watchdog fired): lavapipe cannot cancel it and the device may still
     // run it, so nothing is destroyed or waited for; the lab says so, logs a terminal event and
-    // ends the process (on a GPU the driver's reset arrives as a device loss instead, above).
+    // ends the process (on a GPU the driver's reset arrives as a device loss instead, below).
     auto end_on_runaway = [&](int rc, const std::string& why) {
         std::fprintf(stderr, "passlab: a shader runs away and this driver cannot cancel it: the lab ends (fix the shader and start it again)\n");
         log.write("ended", {{"reason", "runaway"}, {"message", why}, {"exit_code", rc}});
         exit_after_hang(rc);
     };
+    // VK_ERROR_DEVICE_LOST (on a GPU: the driver reset it, usually after a runaway shader):
+    // everything on the old device goes, a new device, window and panel are made, and the graph
+    // is built again from the files (a reload's rules: the params set in the panel return, the
+    // camera and clock go on). Three losses in one session end the lab: something is wrong.
     int losses = 0;
     auto recover_device = [&](const std::string& why) -> Status {
         ++losses;
