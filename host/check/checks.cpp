@@ -319,9 +319,11 @@ std::vector<CaseResult> run_preset_tests(vk::ContextSlot& slot, const fs::path& 
                         cr.checks.push_back({c.kind, false, "no image check of kind '" + c.kind + "' (" + c.loc.str() + ")", {}, {}, {}});
                     // A failed check shows, in the report, the image it read, unless that is the
                     // case's own 8-bit image already there.
-                    if (!opt.report_dir.empty() && !cr.checks.back().passed)
+                    if (!opt.report_dir.empty() && !cr.checks.back().passed) {
+                        const bool same_image = own && num(c.args, "mip", t.mip) == t.mip && num(c.args, "layer", t.layer) == t.layer;
                         cr.checks.back().actual_file = save_check_image(**target, opt.report_dir / case_id, cr.checks.size(),
-                                                                        own && (**target).depth == 1 && !cr.image_file.empty());
+                                                                        same_image && (**target).depth == 1 && !cr.image_file.empty());
+                    }
                 }
             }
         }
