@@ -241,6 +241,16 @@ int run(const RunOptions& o, const CommonOptions& c) {
     int from_sidecar = o.sidecar ? apply_sidecar(st, *current, sidecar, o.set) : 0;
     log.write("started", {{"preset", toml.string()}, {"sidecar_values", from_sidecar}});
 
+    // A newly built executor takes over (after a reload, or on a new device): the watchdog, the
+    // wall clock, "Reset"'s values, the params set in the panel and the watched files follow it.
+    auto install = [&](std::unique_ptr<exec::Executor> next) {
+        current = std::move(next);
+        current->set_timeout(frame_timeout);
+        apply_wall_clock(current->params(), o.set, started);
+        base_params = current->params();
+        reapply_touched(st, *current);
+        watch_all(current->graph().dependencies);
+    };
     // A runaway shader (the watchdog fired): lavapipe cannot cancel it and the device may still
     // run it, so nothing is destroyed or waited for; the lab says so, logs a terminal event and
     // ends the process (on a GPU the driver's reset arrives as a device loss instead, below).
@@ -280,12 +290,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
         if (!again) return again.error();
         auto next = exec::Executor::create(**ctx, std::move(again.value()), &pipelines);
         if (!next) return next.error();
-        current = std::move(next.value());
-        current->set_timeout(frame_timeout);
-        apply_wall_clock(current->params(), o.set, started);
-        base_params = current->params();
-        reapply_touched(st, *current);
-        watch_all(current->graph().dependencies);
+        install(std::move(next.value()));
         log.write("device-recreated", {{"loss", losses}, {"device", (*ctx)->device_description()}});
         return ok_status();
     };
@@ -423,12 +428,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
                     // The old executor is retired, not destroyed: it goes once the GPU work
                     // submitted so far has finished (Context::collect after the next frame's fence).
                     (*ctx)->retire(std::move(current));
-                    current = std::move(next_ex.value());
-                    current->set_timeout(frame_timeout);
-                    apply_wall_clock(current->params(), o.set, started);
-                    base_params = current->params();
-                    reapply_touched(st, *current);
-                    watch_all(current->graph().dependencies);
+                    install(std::move(next_ex.value()));
                     std::vector<std::string> all;
                     for (const auto& p : current->graph().passes) all.push_back(p.desc->name);
                     log.write("reload-ok", {{"passes", all},
