@@ -146,11 +146,9 @@ std::string family_of(const std::string& where) {
 // run's order within each.
 std::vector<const ReportEntry*> failures_first(const std::vector<ReportEntry>& entries) {
     std::vector<const ReportEntry*> out;
-    for (int rank = 0; rank < 3; ++rank)
-        for (const auto& e : entries) {
-            const int r = !e.result.passed && !e.result.skipped ? 0 : e.result.skipped ? 1 : 2;
-            if (r == rank) out.push_back(&e);
-        }
+    for (const auto& e : entries) out.push_back(&e);
+    auto rank = [](const ReportEntry* e) { return e->result.skipped ? 1 : e->result.passed ? 2 : 0; };
+    std::stable_sort(out.begin(), out.end(), [&](const ReportEntry* a, const ReportEntry* b) { return rank(a) < rank(b); });
     return out;
 }
 
