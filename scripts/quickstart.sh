@@ -34,8 +34,8 @@ else
     cmake --preset asan -G Ninja >/dev/null
     cmake --build build/asan -j "$(nproc)" --target \
       test_util test_graph test_shader test_scene test_image test_exec test_check test_mutate test_import test_lab \
-      fuzz_preset fuzz_glsl fuzz_import fuzz_mesh
-    ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+      fuzz_preset fuzz_glsl fuzz_import fuzz_mesh fuzz_image fuzz_spirv
+    ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp" UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
       ctest --test-dir build/asan -j 2 -L 'unit|fuzz' --output-on-failure --timeout 900
   fi
 fi

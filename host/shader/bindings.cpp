@@ -24,7 +24,7 @@ std::vector<Decorated> decorated(const std::vector<uint32_t>& w) {
     for (size_t i = 5; i < w.size();) {
         uint32_t op = w[i] & 0xffff, len = w[i] >> 16;
         if (len == 0 || i + len > w.size()) break;
-        if (op == 5) names[w[i + 1]] = spirv_string(w, i + 2, i + len);               // OpName
+        if (op == 5 && len >= 2) names[w[i + 1]] = spirv_string(w, i + 2, i + len);    // OpName
         if (op == 71 && len >= 4 && w[i + 2] == 33) binding_at[w[i + 1]] = i + 3;    // Binding
         if (op == 71 && len >= 4 && w[i + 2] == 34) set_of[w[i + 1]] = w[i + 3];     // DescriptorSet
         if (op == 32 && len >= 4) pointee_of[w[i + 1]] = w[i + 3];                    // OpTypePointer

@@ -45,12 +45,36 @@ struct Module {
 };
 
 
+// The fewest words (opcode word included) an instruction this reader looks into must have for
+// every operand it reads to exist; 0 for the instructions it skips. The specification's own
+// minimum for each, except where a shorter form is legal and handled (OpDecorate without a value).
+uint32_t min_words(uint32_t op) {
+    switch (op) {
+    case OpName: return 2;
+    case OpExecutionMode: case OpExecutionModeId: return 3;
+    case OpDecorate: return 3;
+    case OpMemberDecorate: return 4;
+    case OpConstant: case OpSpecConstant: case OpVariable: return 4;
+    case OpTypeVoid: case OpTypeBool: case OpTypeSampler: case OpTypeStruct: return 2;
+    case OpTypeFloat: case OpTypeSampledImage: case OpTypeRuntimeArray: return 3;
+    case OpTypeInt: case OpTypeVector: case OpTypeMatrix: case OpTypeArray: case OpTypePointer: return 4;
+    case OpTypeImage: return 9;
+    default: return op > OpTypeVoid && op < OpTypePointer ? 2 : 0;  // OpTypeOpaque: only its result id is read
+    }
+}
+
 Result<Module> parse(const std::vector<uint32_t>& w) {
     if (w.size() < 5 || w[0] != 0x07230203u) return make_error("not a SPIR-V module");
     Module m;
     for (size_t i = 5; i < w.size();) {
         uint32_t op = w[i] & 0xffff, len = w[i] >> 16;
-        if (len == 0 || i + len > w.size()) return make_error("malformed SPIR-V module");
+        // The words come from glslang or from the SPIR-V cache on disk; a cache file damaged in
+        // any way must be refused here, not read past its end.
+        if (len == 0 || i + len > w.size() || len < min_words(op)) return make_error("malformed SPIR-V module");
+        const bool local_size = (op == OpExecutionMode && w[i + 2] == ModeLocalSize) ||
+                                (op == OpExecutionModeId && w[i + 2] == ModeLocalSizeId);
+        if ((local_size && len < 6) || (op == OpMemberDecorate && w[i + 3] == DecOffset && len < 5))
+            return make_error("malformed SPIR-V module");
         auto a = [&](size_t k) { return w[i + k]; };
         switch (op) {
         case OpName: m.names[a(1)] = spirv_string(w, i + 2, i + len); break;

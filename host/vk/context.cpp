@@ -47,8 +47,8 @@ bool simulated_loss_now() {
 // Under AddressSanitizer only. The loader unloads the driver and the layers at vkDestroyInstance,
 // and the few allocations they never free are then reported from "<unknown module>", which no
 // suppression can name, so leak checking had to be off for every test that opens a device.
-// Pinned in memory (RTLD_NODELETE) they keep their names: tests/lsan.supp suppresses exactly
-// their own leaks and LeakSanitizer checks everything else.
+// Pinned in memory (RTLD_NODELETE) their at-exit allocations stay reachable, so LeakSanitizer
+// checks everything else with no suppression for the driver (tests/lsan.supp has none).
 void pin_vulkan_modules() {
     dl_iterate_phdr(
         [](dl_phdr_info* info, size_t, void*) {

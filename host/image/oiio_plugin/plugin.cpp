@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -34,14 +35,36 @@ int pl_oiio_load(const char* path, int* width, int* height, float** pixels, char
         set_error(err, errlen, "unsupported size " + std::to_string(spec.width) + "x" + std::to_string(spec.height));
         return 1;
     }
-    int nc = spec.nchannels;
-    std::vector<float> raw(static_cast<size_t>(spec.width) * spec.height * nc);
+    // read_image fills width x height x depth x nchannels floats: a volume file (DDS, OpenVDB)
+    // or a header claiming thousands of channels would overrun a buffer sized for one 2D
+    // RGBA-ish slice, so both are refused here (3D textures come from generators).
+    if (spec.depth != 1) {
+        set_error(err, errlen, "3D image files (depth " + std::to_string(spec.depth) + ") are not supported");
+        return 1;
+    }
+    const int nc = spec.nchannels;
+    if (nc < 1 || nc > 64) {
+        set_error(err, errlen, "unsupported channel count " + std::to_string(nc));
+        return 1;
+    }
+    const size_t n = static_cast<size_t>(spec.width) * spec.height;
+    // No C++ exception may cross this extern "C" boundary: allocation failure is an error.
+    std::vector<float> raw;
+    try {
+        raw.resize(n * static_cast<size_t>(nc));
+    } catch (const std::exception&) {
+        set_error(err, errlen, "out of memory for a " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + " image");
+        return 1;
+    }
     if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, raw.data())) {
         set_error(err, errlen, in->geterror());
         return 1;
     }
-    size_t n = static_cast<size_t>(spec.width) * spec.height;
     float* out = static_cast<float*>(std::malloc(n * 4 * sizeof(float)));
+    if (!out) {
+        set_error(err, errlen, "out of memory for a " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + " image");
+        return 1;
+    }
     for (size_t i = 0; i < n; ++i) {
         const float* s = &raw[i * nc];
         float* d = &out[i * 4];

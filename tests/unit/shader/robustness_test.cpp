@@ -157,3 +157,38 @@ TEST_F(ShaderRobustness, NewlineInAFolderNameStaysOutOfThePreamble) {
     EXPECT_EQ(p.error().loc.line, 4) << p.error().format();
     EXPECT_NE(p.error().message.find("undefined_x"), std::string::npos) << p.error().format();
 }
+
+// The reflector also reads SPIR-V from the on-disk cache, which a crash mid-write can leave cut
+// anywhere (fuzz_spirv found the first case: an OpSpecConstant of one word at the module's end).
+// Every instruction of a real module, cut to each shorter length as the module's last words,
+// must be refused as malformed or reflected, never read past; under ASan (the CI sanitizer
+// stage) a read past the vector fails this test. Seen failing (ASan heap-buffer-overflow at
+// reflect.cpp's operand reads) with the min_words() check removed.
+TEST_F(ShaderRobustness, SpirvCutInsideAnInstructionIsRefusedNotReadPast) {
+    auto f = write("main.frag", "#version 450\nlayout(set = 0, binding = 0) uniform sampler2D tex;\n"
+                                "layout(push_constant) uniform P { vec4 tint; float s[4]; } pc;\n"
+                                "layout(location = 0) out vec4 color;\n"
+                                "void main() { color = texture(tex, vec2(0.5)) * pc.tint * pc.s[2]; }\n");
+    auto p = frag(f);
+    ASSERT_TRUE(p) << p.error().format();
+    const std::vector<uint32_t>& w = p->stages.at(0).words;
+    int refused = 0, cuts = 0;
+    for (size_t i = 5; i < w.size();) {
+        const uint32_t op = w[i] & 0xffff, len = w[i] >> 16;
+        ASSERT_GT(len, 0u);
+        for (uint32_t cut = 1; cut < len; ++cut) {
+            std::vector<uint32_t> v(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(i + cut));
+            v[i] = (cut << 16) | op;  // the instruction claims exactly the words left
+            auto r = reflect_spirv(v, Stage::fragment);
+            (void)private_memory_bytes(v);
+            (void)workgroup_memory_bytes(v);
+            ++cuts;
+            if (!r) ++refused;
+        }
+        i += len;
+    }
+    // The module has names, decorations, types, constants and variables, each of which the
+    // reflector reads operands of; a cut of one of them is refused.
+    EXPECT_GT(cuts, 100);
+    EXPECT_GT(refused, 50);
+}
