@@ -4,6 +4,7 @@
 // token; SPIR-V is reflected and guarded against absurd private memory.
 #include "shader/bindings.hpp"
 #include "shader/cache.hpp"
+#include "shader/culprit.hpp"
 #include "shader/entry.hpp"
 #include "shader/include.hpp"
 #include "shader/program.hpp"
@@ -93,24 +94,6 @@ std::optional<LogLine> split_log_line(std::string_view s, const std::map<std::st
     for (size_t p = s.find(':'); p != std::string_view::npos; p = s.find(':', p + 1))
         if (auto l = at(p)) return l;
     return std::nullopt;
-}
-
-// The column of a message's culprit in its source line: its first quoted token, or for a
-// syntax error (which quotes nothing) the unexpected keyword, written in capitals.
-int culprit_column(const std::string& msg, const std::string& source) {
-    if (source.empty()) return 0;
-    if (size_t a = msg.find('\''); a != std::string::npos)
-        if (size_t b = msg.find('\'', a + 1); b != std::string::npos && b > a + 1)
-            if (size_t p = source.find(msg.substr(a + 1, b - a - 1)); p != std::string::npos) return static_cast<int>(p) + 1;
-    const std::string unexpected = "syntax error, unexpected ";
-    if (size_t u = msg.find(unexpected); u != std::string::npos) {
-        std::string word;
-        for (size_t k = u + unexpected.size(); k < msg.size() && (std::isupper(static_cast<unsigned char>(msg[k])) ||
-                                                                 std::isdigit(static_cast<unsigned char>(msg[k])) || msg[k] == '_'); ++k)
-            word += static_cast<char>(std::tolower(static_cast<unsigned char>(msg[k])));
-        if (size_t p = scan::find_word(source, word); p != std::string::npos) return static_cast<int>(p) + 1;
-    }
-    return 0;
 }
 
 // The member names of the block or struct variable `instance` declared in `text`
