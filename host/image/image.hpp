@@ -23,6 +23,9 @@ struct Image {
 // Loads PNG/JPG/EXR/HDR... as RGBA float. 8-bit files give values in [0,1] as stored (sRGB
 // encoded if the file is); callers decide about sRGB through the upload format.
 Result<Image> load_image(const std::filesystem::path& file);
+// Caps the memory load_image may need to decode one file (default: the system's MemAvailable,
+// read at each load); 0 restores the default. For tests and the fuzz target.
+void set_decode_limit(unsigned long long bytes);
 
 // Writes by extension: .png -> 8-bit RGBA (values clamped to [0,1], stored as given, no
 // conversion), .exr -> half or float RGBA. `png_compression` 1..9 (1 is fast: snapshots).

@@ -3,6 +3,7 @@
 // golden — uses stb_image_write, linked directly, so the common path never loads OpenImageIO's
 // ~260 libraries. Writes go to a temporary file that is renamed into place, so an interrupted
 // run never leaves a truncated image behind.
+#include "image/exr_header.hpp"
 #include "image/image.hpp"
 #include "util/files.hpp"
 
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <mutex>
 #include <vector>
 
@@ -22,7 +24,7 @@ namespace pl::image {
 namespace {
 
 struct Plugin {
-    int (*load)(const char*, int*, int*, float**, char*, size_t) = nullptr;
+    int (*load)(const char*, unsigned long long, int*, int*, float**, char*, size_t) = nullptr;
     void (*free_pixels)(float*) = nullptr;
     int (*save)(const char*, int, int, const float*, int, int, char*, size_t) = nullptr;
     std::string error;
@@ -47,6 +49,22 @@ const Plugin& plugin() {
     return p;
 }
 
+// Bytes an image may take to decode: what the system has available now (MemAvailable), so an
+// image too large for this machine is an error before anything is allocated rather than an
+// out-of-memory abort; set_decode_limit() lowers it (the fuzz target's 2 GB budget).
+unsigned long long decode_limit_override = 0;
+
+unsigned long long decode_limit() {
+    if (decode_limit_override) return decode_limit_override;
+    std::ifstream meminfo("/proc/meminfo");
+    for (std::string key; meminfo >> key;) {
+        unsigned long long kib = 0;
+        if (key == "MemAvailable:" && meminfo >> kib) return kib * 1024;
+        meminfo.ignore(256, '\n');
+    }
+    return ~0ull;  // unknown: OpenImageIO's own failure is the error
+}
+
 Error environment_error(std::string msg) {
     Error e = make_error(std::move(msg));
     e.code = ExitCode::environment;
@@ -55,15 +73,19 @@ Error environment_error(std::string msg) {
 
 } // namespace
 
+void set_decode_limit(unsigned long long bytes) { decode_limit_override = bytes; }
+
 Result<Image> load_image(const fs::path& file) {
     // A FIFO or /dev/zero would block the reader or make it seek forever.
     if (auto ok = check_regular_file(file, max_asset_bytes, "image"); !ok) return ok.error();
     const Plugin& p = plugin();
     if (!p.error.empty()) return environment_error(p.error);
+    if (is_exr(file))
+        if (auto ok = check_exr_header(file); !ok) return ok.error();
     char err[512] = {0};
     Image img;
     float* pixels = nullptr;
-    if (p.load(file.c_str(), &img.width, &img.height, &pixels, err, sizeof err) != 0)
+    if (p.load(file.c_str(), decode_limit(), &img.width, &img.height, &pixels, err, sizeof err) != 0)
         return make_error("cannot read image '" + file.string() + "': " + err);
     img.pixels.assign(pixels, pixels + static_cast<size_t>(img.width) * img.height * 4);
     p.free_pixels(pixels);

@@ -24,7 +24,9 @@ extern "C" {
 
 // Loads any format OpenImageIO reads as RGBA float (gray -> rgb, missing alpha = 1).
 // *pixels is malloc'ed; free it with pl_oiio_free. Returns 0 on success.
-int pl_oiio_load(const char* path, int* width, int* height, float** pixels, char* err, size_t errlen) {
+// `max_bytes` bounds what decoding may allocate here and in the caller's copy of the pixels.
+int pl_oiio_load(const char* path, unsigned long long max_bytes, int* width, int* height, float** pixels, char* err,
+                 size_t errlen) {
     auto in = OIIO::ImageInput::open(path);
     if (!in) {
         set_error(err, errlen, OIIO::geterror());
@@ -48,6 +50,14 @@ int pl_oiio_load(const char* path, int* width, int* height, float** pixels, char
         return 1;
     }
     const size_t n = static_cast<size_t>(spec.width) * spec.height;
+    // The decoded channels, the RGBA float result, and load_image's copy of it.
+    const unsigned long long need = n * static_cast<unsigned long long>(nc) * 4 + 2ull * n * 16;
+    if (need > max_bytes) {
+        set_error(err, errlen, "a " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + " image of " +
+                                   std::to_string(nc) + " channels needs " + std::to_string(need >> 20) + " MiB to decode; " +
+                                   std::to_string(max_bytes >> 20) + " MiB are available");
+        return 1;
+    }
     // No C++ exception may cross this extern "C" boundary: allocation failure is an error.
     std::vector<float> raw;
     try {

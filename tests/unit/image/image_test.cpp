@@ -44,6 +44,30 @@ TEST(ImageIO, PngAndExrRoundTrip) {
     fs::remove_all(dir);
 }
 
+// fuzz_image's findings (tests/fuzz/found/image): an EXR whose string attribute claims more
+// bytes than the file has made OpenEXR allocate 1.9 GiB; a PNG header claiming 16384 x 16384
+// needs 12 GiB to decode (channels, RGBA result, copy). Both must be refused, by name, before anything is allocated. Seen
+// failing: without check_exr_header the EXR reaches OpenEXR (the fuzzer's out-of-memory).
+TEST(ImageIO, DamagedExrHeaderAndOversizedImageAreRefusedBeforeDecoding) {
+    const fs::path found = fs::path(PASSLAB_SOURCE_DIR) / "tests/fuzz/found/image";
+    auto exr = load_image(found / "exr-attribute-size-past-end.exr");
+    ASSERT_FALSE(exr);
+    EXPECT_NE(exr.error().message.find("damaged EXR header"), std::string::npos) << exr.error().format();
+    EXPECT_NE(exr.error().message.find("claims 1979711507 bytes, 1433 are left in the file"), std::string::npos) << exr.error().format();
+    set_decode_limit(1ull << 30);
+    auto png = load_image(found / "png-header-16384-squared.png");
+    set_decode_limit(0);
+    ASSERT_FALSE(png);
+    EXPECT_NE(png.error().message.find("16384x16384 image of 4 channels needs 12288 MiB"), std::string::npos)
+        << png.error().format();
+    // A well-formed EXR still passes the header walk (every attribute of a file OpenEXR wrote).
+    fs::path dir = fs::temp_directory_path() / "passlab_image_test_exr";
+    fs::create_directories(dir);
+    ASSERT_TRUE(save_image(ramp(8, 4), dir / "ok.exr"));
+    EXPECT_TRUE(load_image(dir / "ok.exr"));
+    fs::remove_all(dir);
+}
+
 TEST(Procedural, GeneratorsAreDeterministicAndInRange) {
     for (const auto& g : generator_names()) {
         auto a = generate_image(g, 64, 32, 1, {});
