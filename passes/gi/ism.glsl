@@ -1,8 +1,8 @@
 // Imperfect shadow maps (Ritschel et al. 2008; 000_c9f7e5de708ecbb3.txt L5227-5322): "VPL
 // approaches do not require accurate geometry" (L5229), so each VPL's paraboloid shadow map
-// (L5240, "parabolic (omnidirectional) shadow map") is splatted from a "coarse approximation of
-// scene as point cloud" with a "limited number of points" (L5241-5242), and the holes between
-// the points are filled by pull-push (L5250-5262, "pull-push hole filling").
+// (L5242, "parabolic (omnidirectional) shadow map") is splatted from a "coarse approximation of
+// scene as point cloud" with a "limited number of points" (L5243-5244), and the holes between
+// the points are filled by pull-push (L5258-5273, "pull-push hole filling").
 //
 // The point set: ism_count() = points_per_vpl * slots points, area-uniform over the box's
 // surfaces (gi/vpl.glsl's 17 surfaces minus the two block bottoms, which lie on the floor).

@@ -17,6 +17,8 @@
 // A texel matches when |d_ism - d_tri| < the gather's own compare bias at that distance,
 // (3 cm + 6% of the distance) / VPL_FAR (gi/vpl_gather.glsl): the error below which the two maps
 // give every receiver on that ray the same visibility.
+// Each thread walks texels / 256 texels: within llvmpipe's 65535 loop iterations per invocation
+// (instant-radiosity's README) up to 1024 slots of 64x64 maps or 256 of 128x128.
 layout(local_size_x = 256) in;
 #include "gi/vpl.glsl"
 uniform sampler2DArray ism, ism_fine, tri_maps;  // P_0 (after pull-push), D_0 (before), triangles

@@ -1,5 +1,5 @@
 #version 450
-// The point cloud of the imperfect shadow maps (000 L5241-5242: "coarse approximation of scene
+// The point cloud of the imperfect shadow maps (000 L5243-5244: "coarse approximation of scene
 // as point cloud, limited number of points"): point i is area-uniform over the box's surfaces,
 //   surface k with probability A_k / A (inverse CDF over the 15 sampled surfaces),
 //   then (u, v) uniform in the plane's [-1,1]^2, placed by the surface's world_from_object,

@@ -1,5 +1,5 @@
 #version 450
-// Pull-push, the pull (000 L5250-5262): from the coarsest level down, a texel of level l that
+// Pull-push, the pull (000 L5258-5273): from the coarsest level down, a texel of level l that
 // holds a point keeps it, a hole takes its parent's (already filled) value,
 //     P_l(p) = D_l(p)  if D_l(p) < 1,   else P_{l+1}(p / 2),       P_K = D_K (the 1x1 level),
 // so pull-push only fills holes: every texel valid before it is unchanged (the test

@@ -1,5 +1,5 @@
 #version 450
-// Pull-push, the push (000 L5250-5262, "pull-push hole filling"; Grossman & Dally 1998): level
+// Pull-push, the push (000 L5258-5273, "pull-push hole filling"; Grossman & Dally 1998): level
 // l + 1 of the pyramid from level l, each texel the nearest of its 2x2 children that hold a
 // point,
 //     D_{l+1}(p) = min { D_l(2p + o) : o in {0,1}^2, D_l(2p + o) < 1 },  else 1 (still a hole).

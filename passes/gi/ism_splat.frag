@@ -1,6 +1,7 @@
 #version 450
-// A surfel's splat: the texel's direction u (the inverse paraboloid of its centre (s, t),
-// u = (2s, 2t, 1 - s^2 - t^2) / (1 + s^2 + t^2), gi/vpl.glsl's map inverted) hits the disc's
+// A surfel's splat (000 L5248-5253, "imperfect: smaller points"): the texel's direction u (the
+// inverse paraboloid of its centre (s, t), u = (2s, 2t, 1 - s^2 - t^2) / (1 + s^2 + t^2),
+// gi/vpl.glsl's map inverted) hits the disc's
 // plane n . (x - c) = 0 at x = lambda u, lambda = (n . c) / (n . u); the texel is kept if x lies
 // within R of the centre c, with the depth lambda / VPL_FAR: the surface's own depth there, not
 // the centre's (a floor seen at a grazing angle spans many depths over one splat). Written to

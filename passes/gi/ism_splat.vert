@@ -1,7 +1,7 @@
 #version 450
 #extension GL_ARB_shader_viewport_layer_array : require
 // The imperfect shadow maps: every VPL's paraboloid map splatted from its own points in one
-// layered point draw (000 L5240-5247: "parabolic shadow map", "coarse approximation of scene as
+// layered point draw (000 L5240-5253: "parabolic shadow map", "coarse approximation of scene as
 // point cloud", "imperfect: smaller points"). Instance s = VPL slot s -> gl_Layer = s; vertex j
 // = point s + j * slots of the cloud (interleaved subsets, gi/ism.glsl).
 //
