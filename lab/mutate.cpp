@@ -76,6 +76,9 @@ Verdict classify(const ChildResult& r, const std::string& mutated_file) {
         }
         // test.cpp's last line when a device hung (its cases after the runaway ran on a fresh one).
         if (line.rfind("a runaway shader may still be running", 0) == 0) runaway = true;
+        // test.cpp's closing summary (print_summary) follows every case: none of it is the last
+        // case's error (it was read as one, so a golden-only kill of the last case was "other").
+        if (line == "The following cases FAILED:" || line.rfind("goldens: ", 0) == 0) break;
         if (cases.empty()) continue;
         Case& c = cases.back();
         if (line.rfind("    FAIL golden", 0) == 0) c.golden = true;

@@ -1,4 +1,5 @@
 #include "test_workers.hpp"
+#include "results.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -155,6 +156,20 @@ Result<RunSummary> run_in_workers(const std::vector<TestUnit>& units, int jobs, 
                              " without results (its output is above)\n";
             s.entries.push_back(e);
             got = std::move(s);
+        } else if (!WIFEXITED(status) || WEXITSTATUS(status) != (count(got->entries).failed ? 1 : 0)) {
+            // Results, then an exit that does not match them: a worker returns 1 when a case
+            // failed and 0 otherwise, so anything else happened after its results were written,
+            // e.g. a sanitizer's report at exit (AddressSanitizer exits 1 on a leak) or a crash in
+            // teardown. The run cannot pass on that either.
+            ReportEntry e;
+            e.where = units[w.units.front()].where;
+            e.result.name = "(worker)";
+            e.result.error = "the test worker for " + std::to_string(w.units.size()) + " preset(s) from " + e.where +
+                             " wrote its results, then ended with " +
+                             (WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
+                                                : "signal " + std::to_string(WTERMSIG(status))) +
+                             " (its output is above)\n";
+            got->entries.push_back(e);
         }
         results[static_cast<size_t>(&w - workers.data())] = std::move(*got);
     }

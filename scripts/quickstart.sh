@@ -34,8 +34,21 @@ else
     cmake --preset asan -G Ninja >/dev/null
     cmake --build build/asan -j "$(nproc)" --target \
       test_util test_graph test_shader test_scene test_image test_exec test_check test_mutate test_import test_lab \
-      fuzz_preset fuzz_glsl fuzz_import fuzz_mesh fuzz_image fuzz_spirv
-    ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp" UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
-      ctest --test-dir build/asan -j 2 -L 'unit|fuzz' --output-on-failure --timeout 900
+      fuzz_preset fuzz_glsl fuzz_import fuzz_mesh fuzz_image fuzz_spirv passlab
+    export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp" \
+      UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+    ctest --test-dir build/asan -j 2 -L 'unit|fuzz' --output-on-failure --timeout 900
+    # Real presets through the sanitized host: one per family (the whole catalogue would double
+    # the CI time), every case under the validation layer. A report in a -j worker after its
+    # results fails the run too (test_workers.cpp checks each worker's exit against its results).
+    sample=""
+    for p in aa/msaa ao/ssao bump/normal-mapping deferred/gbuffer-shading envmap/sphere-map \
+             fundamentals/textured-cube gi/radiosity image/pull-push npr/hatching oit/weighted-blended \
+             particles/billboards post/separable-blur procedural/fbm raytrace/bvh-traversal shading/lambert \
+             shadows/pcf texturing/mipmapping visibility/backface-culling volumetric/atmospheric-sky; do
+      sample="$sample presets/$p"
+    done
+    # shellcheck disable=SC2086
+    build/asan/lab/passlab test $sample --validation -j 2
   fi
 fi
