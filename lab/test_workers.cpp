@@ -143,17 +143,23 @@ Result<RunSummary> run_in_workers(const std::vector<TestUnit>& units, int jobs, 
             if (!j.is_discarded())
                 if (auto s = run_summary_from_json(j)) got = std::move(s.value());
         }
+        // A failed "(worker)" entry: how the worker ended, after `what`.
+        auto worker_failure = [&](const std::string& what) {
+            ReportEntry e;
+            e.where = units[w.units.front()].where;
+            e.result.name = "(worker)";
+            e.result.error = "the test worker for " + std::to_string(w.units.size()) + " preset(s) from " + e.where + " " +
+                             what + " " +
+                             (WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
+                                                : "signal " + std::to_string(WTERMSIG(status)));
+            return e;
+        };
         if (!got) {
             // The worker died (a crash, or it ended itself after a GPU hang): a failed case says
             // so, so the run cannot pass.
             RunSummary s;
-            ReportEntry e;
-            e.where = units[w.units.front()].where;
-            e.result.name = "(worker)";
-            e.result.error = "the test worker for " + std::to_string(w.units.size()) + " preset(s) from " + e.where + " ended with " +
-                             (WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
-                                                : "signal " + std::to_string(WTERMSIG(status))) +
-                             " without results (its output is above)\n";
+            ReportEntry e = worker_failure("ended with");
+            e.result.error += " without results (its output is above)\n";
             s.entries.push_back(e);
             got = std::move(s);
         } else if (!WIFEXITED(status) || WEXITSTATUS(status) != (count(got->entries).failed ? 1 : 0)) {
@@ -161,14 +167,8 @@ Result<RunSummary> run_in_workers(const std::vector<TestUnit>& units, int jobs, 
             // failed and 0 otherwise, so anything else happened after its results were written,
             // e.g. a sanitizer's report at exit (AddressSanitizer exits 1 on a leak) or a crash in
             // teardown. The run cannot pass on that either.
-            ReportEntry e;
-            e.where = units[w.units.front()].where;
-            e.result.name = "(worker)";
-            e.result.error = "the test worker for " + std::to_string(w.units.size()) + " preset(s) from " + e.where +
-                             " wrote its results, then ended with " +
-                             (WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
-                                                : "signal " + std::to_string(WTERMSIG(status))) +
-                             " (its output is above)\n";
+            ReportEntry e = worker_failure("wrote its results, then ended with");
+            e.result.error += " (its output is above)\n";
             got->entries.push_back(e);
         }
         results[static_cast<size_t>(&w - workers.data())] = std::move(*got);

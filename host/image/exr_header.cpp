@@ -26,20 +26,16 @@ bool read_name(std::ifstream& in, std::string& out) {
 
 } // namespace
 
-bool is_exr(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    unsigned char m[4] = {0, 0, 0, 0};
-    in.read(reinterpret_cast<char*>(m), 4);
-    return in && m[0] == kMagic[0] && m[1] == kMagic[1] && m[2] == kMagic[2] && m[3] == kMagic[3];
-}
-
 Status check_exr_header(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    unsigned char head[8];
+    const bool magic = in.read(reinterpret_cast<char*>(head), 4) && head[0] == kMagic[0] && head[1] == kMagic[1] &&
+                       head[2] == kMagic[2] && head[3] == kMagic[3];
+    if (!magic) return ok_status();  // not an EXR file: OpenImageIO's reader for it decides
     std::error_code ec;
     const auto file_size = fs::file_size(file, ec);
     if (ec) return make_error("cannot read image '" + file.string() + "': " + ec.message());
-    std::ifstream in(file, std::ios::binary);
-    unsigned char head[8];
-    if (!in.read(reinterpret_cast<char*>(head), 8)) return make_error("'" + file.string() + "': an EXR file shorter than its header");
+    if (!in.read(reinterpret_cast<char*>(head + 4), 4)) return make_error("'" + file.string() + "': an EXR file shorter than its header");
     const uint32_t version = head[4] | (head[5] << 8) | (head[6] << 16) | (static_cast<uint32_t>(head[7]) << 24);
     const bool multi_part = (version & kMultiPartBit) != 0;
     auto damaged = [&](const std::string& why) {

@@ -9,10 +9,8 @@
 
 namespace pl::image {
 
-// True when the file starts with the OpenEXR magic number.
-bool is_exr(const std::filesystem::path& file);
-
-// Walks the header(s) (one, or every part's of a multi-part file) as the OpenEXR file layout
+// For a file that starts with the OpenEXR magic number (any other file passes unread past its
+// first 4 bytes): walks the header(s) (one, or every part's of a multi-part file) as the OpenEXR file layout
 // defines them: attributes of name\0 type\0 int32 size and size bytes, ended by an empty name.
 // An error when a name runs past 255 characters, a size is negative or reaches past the end of
 // the file, or the header never ends.

@@ -80,8 +80,7 @@ Result<Image> load_image(const fs::path& file) {
     if (auto ok = check_regular_file(file, max_asset_bytes, "image"); !ok) return ok.error();
     const Plugin& p = plugin();
     if (!p.error.empty()) return environment_error(p.error);
-    if (is_exr(file))
-        if (auto ok = check_exr_header(file); !ok) return ok.error();
+    if (auto ok = check_exr_header(file); !ok) return ok.error();
     char err[512] = {0};
     Image img;
     float* pixels = nullptr;
