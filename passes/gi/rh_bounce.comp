@@ -14,7 +14,10 @@
 // after this bounce is the first bounce plus it: T_{b+1} = L_1 + G(T_b), so N - 1 passes sum
 // the series L_1 + G L_1 + ... + G^{N-1} L_1.
 // The sample pattern is the same for every RH (16 Fibonacci directions and their antipodes,
-// pair j at r_j = (j + 0.5) R / 16): a uniform field stays uniform and isotropic.
+// pair j at r_j = (j + 0.5) R / 16): a uniform field stays uniform and isotropic. Each cascade
+// exchanges light within itself (gi/rh_grid.glsl): a sample beyond its border reads its
+// outermost hints, as the cascades of the engine are separate volumes; one lookup per sample
+// where reading the blended field would cost two in every fade band.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 uniform sampler3D rh;         // T_b (linear filter)
 uniform sampler3D rh_dist;    // r_min, r_max (nearest)
@@ -31,9 +34,15 @@ vec3 fibonacci_hemisphere(int j) {
 }
 
 void main() {
-    ivec3 c = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(c, ivec3(RH_N)))) return;
-    vec3 x = rh_cell_center(c);
+    ivec3 g = ivec3(gl_GlobalInvocationID);
+    int k = g.z / RH_N;  // the cascade (gi/rh_grid.glsl)
+    ivec3 c = ivec3(g.xy, g.z % RH_N);
+    if (any(greaterThanEqual(c, ivec3(RH_N))) || k >= RH_CASCADES_MAX) return;
+    if (k >= rh_cascades()) {  // an unused cascade stays zero (see gi/rh_inject.comp)
+        for (int ch = 0; ch < 3; ++ch) imageStore(rh_next, rh_texel(k, ch, c), vec4(0.0));
+        return;
+    }
+    vec3 x = rh_cell_center(k, c);
     float R = params.gather_radius;
     vec4 sr = vec4(0.0), sg = vec4(0.0), sb = vec4(0.0);
     float wsum = 0.0;
@@ -42,9 +51,8 @@ void main() {
         float r = (float(j % PAIRS) + 0.5) * R / float(PAIRS);
         vec3 q = x + r * d;
         vec4 qr, qg, qb;
-        rh_sample(rh, q, qr, qg, qb);
-        ivec3 qc = clamp(ivec3(floor((q - RH_LO) / RH_CELL)), ivec3(0), ivec3(RH_N - 1));
-        vec2 mm = texelFetch(rh_dist, qc, 0).xy;
+        rh_sample_cascade(rh, k, q, qr, qg, qb);
+        vec2 mm = rh_distances(rh_dist, k, q);
         float rmin = mm.x, rmax = mm.y;
         float factor = 1.0 - clamp((r - rmin) / max(rmax - rmin, 1e-4), 0.0, 1.0);
         float weight = clamp(1.0 - rmin / R, 0.0, 1.0);
@@ -57,7 +65,7 @@ void main() {
     }
     float norm = wsum > 0.0 ? 4.0 * SH_PI / wsum : 0.0;
     for (int ch = 0; ch < 3; ++ch) {
-        ivec3 t = ivec3(c.xy, c.z + ch * RH_N);
+        ivec3 t = rh_texel(k, ch, c);
         vec4 s = ch == 0 ? sr : ch == 1 ? sg : sb;
         imageStore(rh_next, t, imageLoad(rh_first, t) + s * norm);
     }

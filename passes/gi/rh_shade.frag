@@ -6,7 +6,11 @@
 //   radiance = rho/pi * E_direct * V + rho * E_indirect / pi
 // Targets: `radiance` (linear, direct + indirect: what gi_compare.sh compares), `indirect`
 // (E_indirect / pi, before the albedo: the uniform-field cases), `radiance_first` (the same
-// from the first-bounce grid alone, with params.verify: the bounces = 1 case), `coverage`.
+// from the first-bounce grid alone, with params.verify: the bounces = 1 case), `coverage`, and
+// `test_field` (with params.verify): the uniform test field's own E / pi at the tap point,
+// uniform_L + uniform_ramp . p_tap (isotropic, so E / pi = L), written from its closed form and
+// not from the grid: what the reconstruction across the cascades must give; alpha 1 where the
+// tap lies within the outermost hint centres.
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;
 layout(location = 2) flat in vec3 v_albedo;
@@ -14,6 +18,7 @@ layout(location = 0) out vec4 radiance;
 layout(location = 1) out vec4 indirect;
 layout(location = 2) out vec4 radiance_first;
 layout(location = 3) out vec4 coverage;
+layout(location = 4) out vec4 test_field;
 uniform sampler3D rh;
 uniform sampler3D rh_first;
 uniform sampler2D rsm_pos;
@@ -39,7 +44,7 @@ float visibility(vec3 p, vec3 n) {
 
 vec3 indirect_over_pi(sampler3D grid, vec3 p, vec3 n) {
     vec4 r, g, b;
-    rh_sample(grid, p + 0.5 * RH_CELL * n, r, g, b);
+    rh_sample(grid, p + RH_TAP_OFFSET * n, r, g, b);
     return max(vec3(rh_irradiance_over_pi(r, n), rh_irradiance_over_pi(g, n), rh_irradiance_over_pi(b, n)), vec3(0.0));
 }
 
@@ -54,4 +59,12 @@ void main() {
     radiance_first = vec4(0.0);
     if (params.verify) radiance_first = vec4(direct + rho * indirect_over_pi(rh_first, v_world, n), 1.0);
     coverage = vec4(1.0);
+    test_field = vec4(0.0);
+    if (params.verify) {
+        // alpha: the tap point lies within the outermost hint centres, where no cascade clamps
+        // (nearer a wall the lookup holds the value at the clamped point, by design)
+        vec3 tap = v_world + RH_TAP_OFFSET * n;
+        bool inside = all(lessThanEqual(abs(tap), vec3(RH_HI - 0.5 * RH_CELL)));
+        test_field = vec4(vec3(params.uniform_L + dot(params.uniform_ramp, tap)), inside ? 1.0 : 0.0);
+    }
 }

@@ -29,7 +29,7 @@ sys.path.insert(0, os.path.join("tests", "bench"))
 from exr import read_exr
 
 passlab, write = sys.argv[1], sys.argv[2] == "--write"
-METHODS = ["instant-radiosity", "reflective-shadow-maps", "radiance-hints"]
+METHODS = ["instant-radiosity", "reflective-shadow-maps", "imperfect-shadow-maps", "radiance-hints"]
 ref = os.environ.get("GI_REF", "presets/gi/path-tracing-reference")
 ref_frames = int(os.environ.get("GI_REF_FRAMES", "256"))
 # The reference's params: every pixel traced every frame (interleave 1) at 4 paths a frame, so
