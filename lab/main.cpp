@@ -1,6 +1,7 @@
 // passlab: command-line entry. Parses arguments with CLI11 and calls one verb; all work lives in
 // the verbs and the host library.
 #include "verbs.hpp"
+#include "warm_up.hpp"
 #include "vk/check.hpp"
 
 #include <CLI/CLI.hpp>
@@ -121,8 +122,14 @@ int main(int argc, char** argv) {
     run_cmd->add_flag("!--no-sidecar", rn.sidecar, "Ignore saved param values (preset.params.toml)");
     run_cmd->add_option("--inspect", rn.inspect, "Open the image viewer on this image");
     run_cmd->add_option("--capture", rn.capture, "With --frames: save the last frame's window, panel included, to this PNG");
+    run_cmd->add_option("--warm-up", rn.warm_up, "auto (on for CPU devices), on or off: compile half of a reload's new pipelines on a second device, in parallel")
+        ->check(CLI::IsMember({"auto", "on", "off"}));
     add_common(run_cmd);
     add_exercise(run_cmd);
+    // The live lab's companion process (lab/warm_up.hpp): not for users.
+    std::string warm_device;
+    auto* warm_cmd = app.add_subcommand("warm-up-server", "Internal: the live lab's warm-up process")->group("");
+    warm_cmd->add_option("--device", warm_device, "Vulkan device");
 
     BenchOptions bo;
     auto* bench_cmd = app.add_subcommand("bench", "Frame and per-pass GPU timings of a preset, peak memory");
@@ -203,6 +210,7 @@ int main(int argc, char** argv) {
     if (list_cmd->parsed()) return list(verbose, catalogue, course);
     if (bench_cmd->parsed()) return bench(bo, common);
     if (run_cmd->parsed()) return run(rn, common);
+    if (warm_cmd->parsed()) return warm_up_server(warm_device);
     if (gallery_cmd->parsed()) return gallery(gallery_dir, gallery_width, common);
     if (graph_cmd->parsed()) return graph_dot(preset, common);
     if (new_cmd->parsed()) return new_preset(no, common);

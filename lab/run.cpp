@@ -14,6 +14,7 @@
 #include "overlay.hpp"
 #include "panel.hpp"
 #include "reload/watcher.hpp"
+#include "warm_up.hpp"
 #include "exec/param_sidecar.hpp"
 #include "wall_clock.hpp"
 #include "vk/check.hpp"
@@ -183,6 +184,22 @@ int run(const RunOptions& o, const CommonOptions& c) {
     reload::DirWatcher watcher;
     exec::PipelineCache pipelines;  // unchanged passes keep their pipeline across reloads
     BackgroundBuild reload;
+    // Drivers that compile at first draw are CPU drivers in practice (llvmpipe, SwiftShader);
+    // a GPU driver compiles when the pipeline is created, where a warm-up would only repeat it.
+    const bool cpu_device = (*ctx)->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    std::unique_ptr<WarmUpServer> warm_up;
+    if (o.warm_up == "on" || (o.warm_up == "auto" && cpu_device)) {
+        std::string why;
+        warm_up = WarmUpServer::start(co.device, why);
+        if (!warm_up) std::fprintf(stderr, "passlab: no warm-up process (%s): a reload compiles in one place\n", why.c_str());
+        else warm_up->send(toml, bo);  // it learns the first build's code (and warms the lab's start)
+    }
+    // Every rebuild (a reload, a resize) goes to the worker thread and to the warm-up process at
+    // once: both build while the last good graph keeps rendering.
+    auto start_build = [&](double t_start) {
+        reload.start(toml, bo, t_start);
+        if (warm_up) log.write("warm-up", {{"sent", warm_up->send(toml, bo)}});
+    };
     bool first_new_frame = false;
     std::array<int, 2> pending_size{0, 0};  // a window size waiting to settle
     std::array<int, 2> built_size = built->view;
@@ -387,7 +404,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
             built_size = pending_size;
             bo.size = pending_size;
             log.write("resize", {{"size", {pending_size[0], pending_size[1]}}});
-            reload.start(toml, bo, log.now_ms());
+            start_build(log.now_ms());
             pending_size = {0, 0};
         }
 
@@ -400,13 +417,18 @@ int run(const RunOptions& o, const CommonOptions& c) {
             log.write("reload-started", {{"files", files}});
             reimport_changed(changed);
             if (reload.busy()) reload.again = true;  // edited while compiling: compile once more after
-            else reload.start(toml, bo, log.now_ms());
+            else start_build(log.now_ms());
         }
+        if (warm_up)
+            if (auto a = warm_up->poll()) {
+                auto done = nlohmann::ordered_json::parse(*a, nullptr, false);
+                if (!done.is_discarded()) log.write("warm-up-done", done);
+            }
         if (auto next = reload.take()) {
             if (reload.again) {
                 // The result is already stale: the files changed while it compiled.
                 reload.again = false;
-                reload.start(toml, bo, reload.t0);
+                start_build(reload.t0);
             } else {
                 double t_compiled = log.now_ms();
                 Result<std::unique_ptr<exec::Executor>> next_ex =
@@ -429,6 +451,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
                     // submitted so far has finished (Context::collect after the next frame's fence).
                     (*ctx)->retire(std::move(current));
                     install(std::move(next_ex.value()));
+
                     std::vector<std::string> all;
                     for (const auto& p : current->graph().passes) all.push_back(p.desc->name);
                     log.write("reload-ok", {{"passes", all},

@@ -67,6 +67,7 @@ struct RunOptions {
     bool sidecar = true;           // apply the saved param values (preset.params.toml)
     std::string inspect;           // open the image viewer on this image
     std::string capture;           // save the last frame's window (panel included) to this PNG
+    std::string warm_up = "auto";  // auto | on | off (lab/warm_up.hpp)
 };
 
 struct BenchOptions {

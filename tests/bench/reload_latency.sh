@@ -2,7 +2,9 @@
 # Edit-to-new-frame latency of `passlab run` under Xvfb: N edits of a shader by atomic rename;
 # for each, detect = reload-started - edit, rebuild = reload-ok - reload-started (parse,
 # compile, pipelines), first frame = the next frame-presented - reload-ok (includes llvmpipe's
-# shader compilation at first draw). Prints p50/p95 of each and of the total.
+# shader compilation at first draw), and the warm-up process's job time (lab/warm_up.hpp; it runs
+# beside the rebuild and the first frame). Prints p50/p95 of each and of the total.
+# PASSLAB_RUN_ARGS adds flags to `passlab run` (e.g. "--warm-up off" for the comparison).
 # The edited file holds the token /*KNOB*/1.0; each edit writes a different number there, so
 # the generated code really changes (an unused constant would hit Mesa's shader cache). The
 # numbers differ between runs too (a per-run salt): Mesa's on-disk cache keeps compiled shaders
@@ -15,7 +17,7 @@ passlab=$1 edits=${2:-20} src=${3:-$(dirname "$0")/../live/preset} file=${4:-mai
 work=$(mktemp -d)
 cp -r "$src" "$work/p"
 ev="$work/events.jsonl"
-xvfb-run -a -s "-screen 0 640x480x24" sh -c 'echo $$ > "$1"; exec "$2" run "$3" --events "$4" --seconds 300' sh \
+xvfb-run -a -s "-screen 0 640x480x24" sh -c 'echo $$ > "$1"; exec "$2" run "$3" --events "$4" --seconds 300 ${PASSLAB_RUN_ARGS:-}' sh \
   "$work/pid" "$passlab" "$work/p" "$ev" > "$work/run.log" 2>&1 &
 trap 'kill "$(cat "$work/pid" 2>/dev/null)" 2>/dev/null || true; rm -rf "$work"' EXIT
 count() { c=$(grep -c "$1" "$ev" 2>/dev/null) || c=0; echo "${c:-0}"; }
@@ -44,6 +46,7 @@ awk -v edits="$work/edits" '
   BEGIN { n = 0; while ((getline l < edits) > 0) edit[++n] = l + 0 }
   /"reload-started"/ { started[++ns] = field($0, "wall_ms") }
   /"reload-ok"/ { ok[++no] = field($0, "wall_ms"); want_frame = no }
+  /"warm-up-done"/ && ns > 0 { warm[++nw] = field($0, "ms") }
   /"frame-presented"/ && want_frame { frame[want_frame] = field($0, "wall_ms"); want_frame = 0 }
   END {
     for (k = 1; k <= n; ++k) { d[k] = started[k] - edit[k]; r[k] = ok[k] - started[k]; f[k] = frame[k] - ok[k]; t[k] = frame[k] - edit[k] }
@@ -51,5 +54,7 @@ awk -v edits="$work/edits" '
     printf "detect       p50 %6.1f ms  p95 %6.1f ms\n", pct(d, n, 0.5), pct(d, n, 0.95)
     printf "rebuild      p50 %6.1f ms  p95 %6.1f ms  (parse, compile, pipelines)\n", pct(r, n, 0.5), pct(r, n, 0.95)
     printf "first frame  p50 %6.1f ms  p95 %6.1f ms  (render incl. first-draw compile, present)\n", pct(f, n, 0.5), pct(f, n, 0.95)
+    if (nw > 0) printf "warm-up      p50 %6.1f ms  p95 %6.1f ms  (%d jobs of the warm-up process, from the detection of the edit, beside the rebuild and the first frame)\n", pct(warm, nw, 0.5), pct(warm, nw, 0.95), nw
+    else printf "warm-up      none (--warm-up off, or a GPU)\n"
     printf "total        p50 %6.1f ms  p95 %6.1f ms\n", pct(t, n, 0.5), pct(t, n, 0.95)
   }' "$ev"
