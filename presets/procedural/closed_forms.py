@@ -2,7 +2,7 @@
 """Issue 14: the expected values of the closed-form probes added to presets/procedural (brick,
 fbm, hash-spectral-test, simplex-noise, value-noise, warped-noise), evaluated in float64 from
 the same formulas the shaders use: the PCG3D hash of passes/common/hash.glsl is integer
-arithmetic, so the lattice values and gradients are exact. Run: python3 issue14_closed_forms.py
+arithmetic, so the lattice values and gradients are exact. Run: python3 closed_forms.py
 """
 import math
 M=0xffffffff

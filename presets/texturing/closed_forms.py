@@ -3,7 +3,7 @@
 (multitexture-gloss-map, mipmapping, light-mapping, projective-texture, anisotropic-filtering),
 evaluated in float64 from the formulas the shaders and the host use (the PCG3D hash of
 passes/common/hash.glsl, host/image/procedural.cpp's checker, host/scene/camera.cpp's orbit
-camera and glm::lookAt, passes/common/camera.glsl). Run: python3 issue14_closed_forms.py
+camera and glm::lookAt, passes/common/camera.glsl). Run: python3 closed_forms.py
 """
 import math
 M = 0xffffffff
