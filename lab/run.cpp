@@ -194,12 +194,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
         if (!warm_up) std::fprintf(stderr, "passlab: no warm-up process (%s): a reload compiles in one place\n", why.c_str());
         else warm_up->send(toml, bo);  // it learns the first build's code (and warms the lab's start)
     }
-    // Every rebuild (a reload, a resize) goes to the worker thread and to the warm-up process at
-    // once: both build while the last good graph keeps rendering.
-    auto start_build = [&](double t_start) {
-        reload.start(toml, bo, t_start);
-        if (warm_up) log.write("warm-up", {{"sent", warm_up->send(toml, bo)}});
-    };
+    auto start_build = [&](double t_start) { reload.start(toml, bo, t_start); };
     bool first_new_frame = false;
     std::array<int, 2> pending_size{0, 0};  // a window size waiting to settle
     std::array<int, 2> built_size = built->view;
@@ -431,6 +426,10 @@ int run(const RunOptions& o, const CommonOptions& c) {
                 start_build(reload.t0);
             } else {
                 double t_compiled = log.now_ms();
+                // The build compiled: the warm-up process builds it too, from the SPIR-V cache the
+                // worker just filled (no second glslang run competing with this one), and starts
+                // compiling its half while this thread creates the executor and draws.
+                if (warm_up && *next) log.write("warm-up", {{"sent", warm_up->send(toml, bo)}});
                 Result<std::unique_ptr<exec::Executor>> next_ex =
                     *next ? exec::Executor::create(**ctx, std::move(next->value()), &pipelines)
                           : Result<std::unique_ptr<exec::Executor>>(next->error());

@@ -1,9 +1,9 @@
 // The live lab's warm-up process, for drivers that compile a pipeline's shaders at its first draw
 // rather than when it is created. llvmpipe does (20-30 ms per pipeline, one after another on the
 // queue's thread), so an edit of an include that ten passes share stalls the first new frame by
-// ~250 ms. On every rebuild the lab also hands the build to a companion process
+// ~250 ms. Every build that compiled the lab also hands to a companion process
 // (`passlab warm-up-server`, started with the lab, with its own device), which builds the graph
-// too and renders one frame of the later half of the passes whose code changed, while the lab's
+// too (from the SPIR-V cache the lab's build just filled) and renders one frame of the later half of the passes whose code changed, while the lab's
 // own first frame compiles the earlier half: two cores compile at once, and when the lab's frame
 // reaches the later passes the driver's on-disk shader cache already holds them. A second device
 // in the lab's own process would not do: llvmpipe compiled no faster with two devices in one

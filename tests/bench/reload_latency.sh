@@ -54,7 +54,7 @@ awk -v edits="$work/edits" '
     printf "detect       p50 %6.1f ms  p95 %6.1f ms\n", pct(d, n, 0.5), pct(d, n, 0.95)
     printf "rebuild      p50 %6.1f ms  p95 %6.1f ms  (parse, compile, pipelines)\n", pct(r, n, 0.5), pct(r, n, 0.95)
     printf "first frame  p50 %6.1f ms  p95 %6.1f ms  (render incl. first-draw compile, present)\n", pct(f, n, 0.5), pct(f, n, 0.95)
-    if (nw > 0) printf "warm-up      p50 %6.1f ms  p95 %6.1f ms  (%d jobs of the warm-up process, from the detection of the edit, beside the rebuild and the first frame)\n", pct(warm, nw, 0.5), pct(warm, nw, 0.95), nw
+    if (nw > 0) printf "warm-up      p50 %6.1f ms  p95 %6.1f ms  (%d jobs of the warm-up process, each from receiving the compiled build, beside the first frame)\n", pct(warm, nw, 0.5), pct(warm, nw, 0.95), nw
     else printf "warm-up      none (--warm-up off, or a GPU)\n"
     printf "total        p50 %6.1f ms  p95 %6.1f ms\n", pct(t, n, 0.5), pct(t, n, 0.95)
   }' "$ev"

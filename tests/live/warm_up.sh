@@ -2,8 +2,8 @@
 # The warm-up process (lab/warm_up.hpp) under Xvfb, on tests/bench/ten-pass: an edit of the
 # include the ten passes share reaches the `passlab warm-up-server` companion, which renders the
 # later half of the changed passes (p5..p9) without error; an edit that only touches p0 warms
-# nothing beyond it; a GLSL error reaches it too and is answered with the error while the lab
-# keeps its last good frame; `--warm-up off` starts no companion. What is checked is that the
+# nothing beyond it; a GLSL error is not sent (the lab keeps its last good frame); `--warm-up
+# off` starts no companion. What is checked is that the
 # mechanism runs and what it renders, not its time (tests/bench/reload_latency.sh measures that).
 # Usage: warm_up.sh PASSLAB WORKDIR
 set -eu
@@ -41,15 +41,14 @@ edit "$p/first.frag" 's|^void main|// touched\nvoid main|'
 wait_for warm-up-done 3
 last=$(grep warm-up-done "$ev" | tail -1)
 echo "$last" | grep -q '"passes":\[\]' || { echo "p0 edit: expected nothing warmed: $last" >&2; exit 1; }
-# A syntax error: the companion answers with it, the lab keeps presenting its last good frame.
+# A syntax error: nothing is sent (only a build that compiled is warmed), the lab keeps
+# presenting its last good frame.
 wait_for first_after_reload 2
 sleep 0.5
 edit "$p/shared.glsl" 's|vec3 shade|vec3 shade(|'
 wait_for reload-failed 1
-wait_for warm-up-done 4
-last=$(grep warm-up-done "$ev" | tail -1)
-echo "$last" | grep -q '"error":"[^"]' || { echo "broken include: expected the warm-up to report the error: $last" >&2; exit 1; }
 n=$(count frame-presented); wait_for frame-presented $((n + 3))
+[ "$(count '"event":"warm-up"')" = 2 ] || { echo "broken include: a warm-up was sent" >&2; exit 1; }
 kill "$(cat "$work/pid")" 2>/dev/null || true
 sleep 0.5
 # --warm-up off: no companion, no warm-up events.
@@ -57,4 +56,4 @@ rm -f "$ev"
 xvfb-run -a -s "-screen 0 640x480x24" sh -c 'echo $$ > "$1"; exec "$2" run "$3" --events "$4" --frames 5 --warm-up off' sh \
   "$work/pid" "$passlab" "$p" "$ev" > "$work/run-off.log" 2>&1 || true
 [ "$(count '"warm-up')" = 0 ] || { echo "--warm-up off still warmed" >&2; exit 1; }
-echo "warm-up: include edit warmed p5..p9, a one-pass edit nothing, a broken include reported; off: none"
+echo "warm-up: include edit warmed p5..p9, a one-pass edit nothing, a broken include not sent; off: none"
