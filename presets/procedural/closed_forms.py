@@ -1,20 +1,13 @@
 #!/usr/bin/env python3
-"""Issue 14: the expected values of the closed-form probes added to presets/procedural (brick,
+"""The expected values of the closed-form probes added to presets/procedural (brick,
 fbm, hash-spectral-test, simplex-noise, value-noise, warped-noise), evaluated in float64 from
 the same formulas the shaders use: the PCG3D hash of passes/common/hash.glsl is integer
 arithmetic, so the lattice values and gradients are exact. Run: python3 closed_forms.py
 """
 import math
-M=0xffffffff
-def pcg3d(x,y,z):
-    x=(x*1664525+1013904223)&M; y=(y*1664525+1013904223)&M; z=(z*1664525+1013904223)&M
-    x=(x+y*z)&M; y=(y+z*x)&M; z=(z+x*y)&M
-    x^=x>>16; y^=y>>16; z^=z>>16
-    x=(x+y*z)&M; y=(y+z*x)&M; z=(z+x*y)&M
-    return x,y,z
-def u(i): return int(i)&M
-def hash_pcg(c): return pcg3d(u(c[0]),u(c[1]),u(c[2]))[0]/4294967296.0
-def hash_pcg3(c): return tuple(v/4294967296.0 for v in pcg3d(u(c[0]),u(c[1]),u(c[2])))
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'passes', 'common'))
+from hash import M, pcg3d, hash_pcg, hash_pcg3  # passes/common/hash.glsl's twin
 def fade3(t): return t*t*(3-2*t)
 def fade5(t): return t*t*t*(t*(t*6-15)+10)
 def mix(a,b,t): return a+(b-a)*t

@@ -1,21 +1,14 @@
 #!/usr/bin/env python3
-"""Issue 14: the expected values of the closed-form probes added to presets/texturing
+"""The expected values of the closed-form probes added to presets/texturing
 (multitexture-gloss-map, mipmapping, light-mapping, projective-texture, anisotropic-filtering),
 evaluated in float64 from the formulas the shaders and the host use (the PCG3D hash of
 passes/common/hash.glsl, host/image/procedural.cpp's checker, host/scene/camera.cpp's orbit
 camera and glm::lookAt, passes/common/camera.glsl). Run: python3 closed_forms.py
 """
 import math
-M = 0xffffffff
-
-def pcg3d(x, y, z):
-    x = (x * 1664525 + 1013904223) & M; y = (y * 1664525 + 1013904223) & M; z = (z * 1664525 + 1013904223) & M
-    x = (x + y * z) & M; y = (y + z * x) & M; z = (z + x * y) & M
-    x ^= x >> 16; y ^= y >> 16; z ^= z >> 16
-    x = (x + y * z) & M; y = (y + z * x) & M; z = (z + x * y) & M
-    return x, y, z
-
-def hash_pcg(c): return pcg3d(int(c[0]) & M, int(c[1]) & M, int(c[2]) & M)[0] / 4294967296.0
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'passes', 'common'))
+from hash import M, pcg3d, hash_pcg, hash_pcg3  # passes/common/hash.glsl's twin
 def srgb(v): return 12.92 * v if v <= 0.0031308 else 1.055 * v ** (1 / 2.4) - 0.055
 
 def multitexture():
