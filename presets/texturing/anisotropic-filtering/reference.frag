@@ -3,11 +3,20 @@
 // sub-pixel positions (16 x 16 = 256 per pixel by default), each ray-cast to the plane and
 // sampled bilinearly from level 0. This is the box filter over the true footprint that every
 // real-time filter approximates. Alpha = the fraction of sub-samples on the plane.
+// Progressive in the live view: with ref_split = s the grid is drawn as s^2 interleaved
+// sub-grids, one per frame (frame k takes the points (i, j) with i mod s, j mod s = k's digits),
+// their sums and hit counts add up in reference_acc, and from frame s^2 on (the whole grid seen)
+// the sum is kept as it is: the same box filter as all ref_grid^2 samples in one frame, at 1/s^2
+// of the cost per frame for s^2 frames, then none. Any change of view or param restarts it
+// (frame.accum_frame). ref_split = 1: every sample in the frame (what the tests run).
 #include "ground.glsl"
 layout(location = 0) out vec4 reference_out;
+layout(location = 1) out vec4 reference_acc;   // sum of the samples' rgb, number of hits
 uniform sampler2D tex_level0;
+uniform sampler2D reference_acc_prev;
 #include "strips.glsl"
 void main() {
+    reference_acc = vec4(0.0);
     if (!filter_needed(SHOW_REFERENCE, gl_FragCoord.x)) { reference_out = vec4(0.0); return; }
     // A pixel whose four corners all look above the horizon has no sample on the plane: the
     // height of the ray's far-plane point above the eye, w.y / w.w - o.y (the sign of d.y in
@@ -23,16 +32,20 @@ void main() {
     }
     if (lowest > 1e-3) { reference_out = vec4(0.0); return; }
     int n = params.ref_grid;
-    vec3 sum = vec3(0.0);
-    float hits = 0.0;
-    vec2 corner = floor(gl_FragCoord.xy);
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            vec2 t;
-            if (ground_uv(corner + (vec2(i, j) + 0.5) / float(n), t)) {
-                sum += textureLod(tex_level0, t, 0.0).rgb;
-                hits += 1.0;
+    int s = clamp(params.ref_split, 1, n);
+    int k = int(frame.accum_frame);
+    vec4 acc = k > 0 ? texelFetch(reference_acc_prev, ivec2(gl_FragCoord.xy), 0) : vec4(0.0);
+    if (k < s * s) {  // this frame's sub-grid: i = s a + (k mod s), j = s b + (k / s)
+        ivec2 d = ivec2(k % s, k / s);
+        vec2 corner = floor(gl_FragCoord.xy);
+        for (int j = d.y; j < n; j += s)
+            for (int i = d.x; i < n; i += s) {
+                vec2 t;
+                if (ground_uv(corner + (vec2(i, j) + 0.5) / float(n), t)) acc += vec4(textureLod(tex_level0, t, 0.0).rgb, 1.0);
             }
-        }
-    reference_out = hits > 0.0 ? vec4(sum / hits, hits / float(n * n)) : vec4(0.0);
+    }
+    reference_acc = acc;
+    // until the whole grid is seen, the mean of the samples drawn so far (hits over drawn points)
+    float drawn = float(n * n) * float(min(k + 1, s * s)) / float(s * s);
+    reference_out = acc.w > 0.0 ? vec4(acc.rgb / acc.w, acc.w / drawn) : vec4(0.0);
 }
