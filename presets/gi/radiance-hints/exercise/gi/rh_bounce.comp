@@ -34,7 +34,7 @@ vec3 fibonacci_hemisphere(int j) {
 }
 
 void main() {
-    if (frame.accum_frame >= uint(params.rh_frames)) return;  // cached: rh_next is not read (gi/rh_copy.comp)
+    if (!rh_exchange_runs()) return;  // cached, or a frame between updates: rh_next is not read (gi/rh_copy.comp)
     ivec3 g = ivec3(gl_GlobalInvocationID);
     int k = g.z / RH_N;  // the cascade (gi/rh_grid.glsl)
     ivec3 c = ivec3(g.xy, g.z % RH_N);

@@ -51,6 +51,17 @@ float rh_cascade_weight(int k, vec3 p) {
     return clamp(min(inside.x, min(inside.y, inside.z)) / (RH_BLEND_CELLS * cell), 0.0, 1.0);
 }
 
+// Whether this frame recomputes the grid the fragments read (seed, bounces, commit): not once it
+// is cached (params.rh_frames frames after a change), and while it converges only on every
+// params.rh_update-th frame, always including the last before the cache, so the cached grid is
+// the exchange of the final mean. Between updates the fragments read the last exchanged grid,
+// at most rh_update - 1 frames of injection behind.
+bool rh_exchange_runs() {
+    uint k = frame.accum_frame, last = uint(max(params.rh_frames, 1)) - 1u;
+    if (k > last) return false;
+    return k == last || k % uint(max(params.rh_update, 1)) == 0u;
+}
+
 // The 4 basis values y_0, y_1^-1, y_1^0, y_1^1 at w.
 vec4 rh_basis(vec3 w) {
     float y[16];
