@@ -92,6 +92,7 @@ ChildResult run_program(const std::string& program, const std::vector<std::strin
     int status = 0;
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
     if (!r.timed_out && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
+    if (!r.timed_out && WIFSIGNALED(status)) r.signal = WTERMSIG(status);
     return r;
 }
 

@@ -13,6 +13,7 @@ namespace pl::lab {
 struct ChildResult {
     int exit_code = -1;      // -1 when killed or not started
     bool timed_out = false;  // killed after the time limit
+    int signal = 0;          // the signal that ended it (a crash), 0 when it exited or timed out
     std::string output;      // stdout and stderr, interleaved
     std::string error;       // why it could not be started
 };

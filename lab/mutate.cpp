@@ -19,6 +19,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -104,8 +105,19 @@ Verdict classify(const ChildResult& r, const std::string& mutated_file) {
     for (const auto& c : cases)
         if (c.golden) v.killers.push_back(c.name);
     if (!v.killers.empty()) return v.outcome = Outcome::golden, v;
+    if (r.signal) return v.outcome = Outcome::other, v.note = std::string("passlab test crashed twice (") + strsignal(r.signal) + ")", v;
     if (r.exit_code != 0) return v.outcome = Outcome::other, v.note = "passlab test exited " + std::to_string(r.exit_code), v;
     return v;
+}
+
+// Runs a `passlab test` child; one that a signal ended (a crash, in the driver as often as not)
+// runs once more: a crash that does not repeat says nothing about the mutant (two runs that
+// shared the machine with other jobs each saw one, and the next presets' baselines then failed),
+// and one that does repeat is reported as the crash it is.
+ChildResult run_test_child(const std::vector<std::string>& args, double timeout_s) {
+    ChildResult r = run_self(args, timeout_s);
+    if (r.signal) r = run_self(args, timeout_s);
+    return r;
 }
 
 struct Source {
@@ -181,11 +193,12 @@ int mutate(const MutateOptions& o, const CommonOptions& c) {
         const fs::path dir = toml.parent_path();
         const std::string where = fs::proximate(dir, ec).string();
         // The baseline: every case must pass unmutated, or a kill would mean nothing.
-        auto base = run_self(test_args(toml, c, scratch_root / "baseline"), o.child_timeout_s);
+        auto base = run_test_child(test_args(toml, c, scratch_root / "baseline"), o.child_timeout_s);
         fs::remove_all(scratch_root / "baseline", ec);
         if (base.exit_code != 0) {
-            std::printf("mutate %s: skipped: its tests do not pass unmutated (exit %d%s); `passlab test %s` says:\n%s",
-                        where.c_str(), base.exit_code, base.timed_out ? ", timed out" : "", where.c_str(),
+            std::printf("mutate %s: skipped: its tests do not pass unmutated (exit %d%s%s); `passlab test %s` says:\n%s",
+                        where.c_str(), base.exit_code, base.timed_out ? ", timed out" : "",
+                        base.signal ? (std::string(", crashed twice: ") + strsignal(base.signal)).c_str() : "", where.c_str(),
                         base.output.c_str());
             ++baseline_failures;
             continue;
@@ -243,7 +256,7 @@ int mutate(const MutateOptions& o, const CommonOptions& c) {
             }
             auto args = test_args(toml, c, scratch);
             args.insert(args.end(), {"--exercise", (scratch / "overlay").string()});
-            auto r = run_self(args, o.child_timeout_s);
+            auto r = run_test_child(args, o.child_timeout_s);
             fs::remove_all(scratch, ec);
             Verdict v = classify(r, src.rel.filename().string());
             tally.add(v.outcome);
