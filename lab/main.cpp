@@ -122,7 +122,7 @@ int main(int argc, char** argv) {
     run_cmd->add_flag("!--no-sidecar", rn.sidecar, "Ignore saved param values (preset.params.toml)");
     run_cmd->add_option("--inspect", rn.inspect, "Open the image viewer on this image");
     run_cmd->add_option("--capture", rn.capture, "With --frames: save the last frame's window, panel included, to this PNG");
-    run_cmd->add_option("--warm-up", rn.warm_up, "auto (on for CPU devices), on or off: compile half of a reload's new pipelines on a second device, in parallel")
+    run_cmd->add_option("--warm-up", rn.warm_up, "auto (on for CPU devices), on or off: a companion process compiles half of a reload's changed passes in parallel")
         ->check(CLI::IsMember({"auto", "on", "off"}));
     add_common(run_cmd);
     add_exercise(run_cmd);
