@@ -46,7 +46,7 @@ void main() {
     // Cached (L2597, "temporal volume caching"): after params.rh_frames frames since the last
     // change the mean is kept as it is, and the passes after this one are skipped too
     // (gi/rh_copy.comp, gi/rh_bounce.comp), so a still view costs only its shading.
-    if (frame.accum_frame >= uint(params.rh_frames)) {
+    if (rh_cached()) {
         for (int ch = 0; ch < 3; ++ch) imageStore(rh_first, rh_texel(k, ch, c), texelFetch(rh_first_prev, rh_texel(k, ch, c), 0));
         imageStore(rh_dist, rh_dist_texel(k, c), texelFetch(rh_dist_prev, rh_dist_texel(k, c), 0));
         return;

@@ -56,10 +56,12 @@ float rh_cascade_weight(int k, vec3 p) {
 // params.rh_update-th frame, always including the last before the cache, so the cached grid is
 // the exchange of the final mean. Between updates the fragments read the last exchanged grid,
 // at most rh_update - 1 frames of injection behind.
+// Cached: params.rh_frames frames since the last change have taken their RSM samples.
+bool rh_cached() { return frame.accum_frame >= uint(max(params.rh_frames, 1)); }
 bool rh_exchange_runs() {
-    uint k = frame.accum_frame, last = uint(max(params.rh_frames, 1)) - 1u;
-    if (k > last) return false;
-    return k == last || k % uint(max(params.rh_update, 1)) == 0u;
+    if (rh_cached()) return false;
+    uint k = frame.accum_frame;
+    return k + 1u == uint(max(params.rh_frames, 1)) || k % uint(max(params.rh_update, 1)) == 0u;
 }
 
 // The 4 basis values y_0, y_1^-1, y_1^0, y_1^1 at w.
