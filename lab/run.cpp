@@ -194,7 +194,6 @@ int run(const RunOptions& o, const CommonOptions& c) {
         if (!warm_up) std::fprintf(stderr, "passlab: no warm-up process (%s): a reload compiles in one place\n", why.c_str());
         else warm_up->send(toml, bo);  // it learns the first build's code (and warms the lab's start)
     }
-    auto start_build = [&](double t_start) { reload.start(toml, bo, t_start); };
     bool first_new_frame = false;
     std::array<int, 2> pending_size{0, 0};  // a window size waiting to settle
     std::array<int, 2> built_size = built->view;
@@ -399,7 +398,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
             built_size = pending_size;
             bo.size = pending_size;
             log.write("resize", {{"size", {pending_size[0], pending_size[1]}}});
-            start_build(log.now_ms());
+            reload.start(toml, bo, log.now_ms());
             pending_size = {0, 0};
         }
 
@@ -412,7 +411,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
             log.write("reload-started", {{"files", files}});
             reimport_changed(changed);
             if (reload.busy()) reload.again = true;  // edited while compiling: compile once more after
-            else start_build(log.now_ms());
+            else reload.start(toml, bo, log.now_ms());
         }
         if (warm_up)
             if (auto a = warm_up->poll()) {
@@ -423,7 +422,7 @@ int run(const RunOptions& o, const CommonOptions& c) {
             if (reload.again) {
                 // The result is already stale: the files changed while it compiled.
                 reload.again = false;
-                start_build(reload.t0);
+                reload.start(toml, bo, reload.t0);
             } else {
                 double t_compiled = log.now_ms();
                 // The build compiled: the warm-up process builds it too, from the SPIR-V cache the
