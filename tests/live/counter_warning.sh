@@ -10,14 +10,7 @@ rm -rf "$work" && mkdir -p "$work/p"
 p="$work/p" ev="$work/events.jsonl"
 src=$(pwd)/tests/bad/counter-overflow
 sed "s|\.\./\.\./graphs/buffer-checks/append.frag|$(pwd)/tests/graphs/buffer-checks/append.frag|" "$src/preset.toml" > "$p/preset.toml"
-count() { c=$(grep -c "$1" "$ev" 2>/dev/null) || c=0; echo "${c:-0}"; }
-wait_for() {  # wait_for PATTERN COUNT (20 s max)
-  i=0
-  while [ "$(count "$1")" -lt "$2" ]; do
-    i=$((i + 1)); [ $i -lt 200 ] || { echo "timed out waiting for $2 x $1" >&2; grep -v frame-presented "$ev" >&2; exit 1; }
-    sleep 0.1
-  done
-}
+. "$(dirname "$0")/lib.sh"   # count, wait_for
 layers() {  # layers N: rewrite the param the way editors save (temp file + rename)
   sed "s/^layers = .*/layers = $1/" "$p/preset.toml" > "$p/preset.toml.tmp~" && mv "$p/preset.toml.tmp~" "$p/preset.toml"
 }

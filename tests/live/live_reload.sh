@@ -15,17 +15,7 @@ printf '# saved by the panel\ngain = 0.75\n' > "$p/preset.params.toml"
 save() {  # save FILE CONTENT: temp file + rename, like vim/VS Code/JetBrains
   printf '%s\n' "$2" > "$1.tmp~" && mv "$1.tmp~" "$1"
 }
-count() {  # count PATTERN: matching lines in the event log (0 before it exists)
-  c=$(grep -c "$1" "$ev" 2>/dev/null) || c=0
-  echo "${c:-0}"
-}
-wait_for() {  # wait_for PATTERN COUNT: until the log has COUNT lines matching PATTERN (20 s max)
-  i=0
-  while [ "$(count "$1")" -lt "$2" ]; do
-    i=$((i + 1)); [ $i -lt 200 ] || { echo "timed out waiting for $2 x $1" >&2; cat "$ev" | grep -v frame-presented >&2; exit 1; }
-    sleep 0.1
-  done
-}
+. "$here/lib.sh"   # count, wait_for
 # The pid file names passlab itself (exec), so the test can stop it; xvfb-run then ends Xvfb.
 xvfb-run -a -s "-screen 0 640x480x24" sh -c 'echo $$ > "$1"; exec "$2" run "$3" --events "$4" --seconds 120' sh \
   "$work/pid" "$passlab" "$p" "$ev" > "$work/run.log" 2>&1 &

@@ -11,14 +11,7 @@ passlab=$1 work=$2
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work" && mkdir -p "$work" && cp -r "$here/../bench/ten-pass" "$work/p"
 p="$work/p" ev="$work/events.jsonl"
-count() { c=$(grep -c "$1" "$ev" 2>/dev/null) || c=0; echo "${c:-0}"; }
-wait_for() {  # wait_for PATTERN COUNT (30 s max)
-  i=0
-  while [ "$(count "$1")" -lt "$2" ]; do
-    i=$((i + 1)); [ $i -lt 300 ] || { echo "timed out waiting for $2 x $1" >&2; grep -v frame-presented "$ev" >&2; exit 1; }
-    sleep 0.1
-  done
-}
+wait_s=30 && . "$here/lib.sh"   # count, wait_for (30 s each)
 edit() {  # edit FILE SED: temp file + rename, like an editor
   sed "$2" "$1" > "$1.tmp~" && mv "$1.tmp~" "$1"
 }

@@ -8,7 +8,8 @@ layout(location = 1) out float height_map;
 uniform sampler2D off_tiles;
 uniform sampler2D off_zero;
 uniform sampler2D off_top;
+uniform sampler2D off_ramp;
 void main() {
-    offsets = params.heights == HEIGHTS_ZERO ? texture(off_zero, uv) : params.heights == HEIGHTS_TOP ? texture(off_top, uv) : texelFetch(off_tiles, ivec2(gl_FragCoord.xy), 0);
+    offsets = params.heights == HEIGHTS_ZERO ? texture(off_zero, uv) : params.heights == HEIGHTS_TOP ? texture(off_top, uv) : params.heights == HEIGHTS_RAMP ? texture(off_ramp, uv) : texelFetch(off_tiles, ivec2(gl_FragCoord.xy), 0);
     height_map = offsets.x;
 }
